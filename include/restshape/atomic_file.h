@@ -1,0 +1,32 @@
+// Writing a file under a temporary name and renaming it into place, so that
+// an interrupted or failed run never leaves a half-written result and never
+// destroys an earlier one before the new one is complete.
+#ifndef restshape_atomic_file_h
+#define restshape_atomic_file_h
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace RestShape
+{
+  /**
+   * Call @p write on a stream to "<path>.tmp-<pid>", then rename it to
+   * @p path. Throws InputError naming @p parameter if the file cannot be
+   * written.
+   */
+  void
+  write_file_atomically(const std::string &                        path,
+                        const std::function<void(std::ostream &)> &write,
+                        const std::string &parameter = "Output/Directory");
+
+  /**
+   * Create @p directory (and parents) if needed and check that files can be
+   * created in it. Throws InputError naming @p parameter otherwise.
+   */
+  void
+  ensure_writable_directory(const std::string &directory,
+                            const std::string &parameter = "Output/Directory");
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,65 @@
+// Parsing of per-label lists such as "1:1500, 2:10000" or "3, 5:xy".
+#ifndef restshape_label_values_h
+#define restshape_label_values_h
+
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  using Label = dealii::types::material_id;
+
+  /**
+   * A value per label: either "value" (the same for every label) or a list
+   * "label:value, label:value". Parse errors throw InputError naming
+   * @p parameter.
+   */
+  class LabelValues
+  {
+  public:
+    static LabelValues
+    parse(const std::string &text, const std::string &parameter);
+
+    /// The value of @p label; throws InputError if there is none.
+    double
+    operator()(const Label label) const;
+
+    bool
+    has(const Label label) const;
+
+    /// All values given (for range checks).
+    std::vector<std::pair<Label, double>>
+    listed() const;
+
+    std::optional<double>   value_for_all;
+    std::map<Label, double> per_label;
+    std::string             parameter;
+  };
+
+  /// A label with the displacement components it fixes ("5:xy").
+  struct FixedLabel
+  {
+    Label               label;
+    std::array<bool, 3> components;
+  };
+
+  /// Parse "3, 5:xy" (empty allowed).
+  std::vector<FixedLabel>
+  parse_fixed_labels(const std::string &text, const std::string &parameter);
+
+  /// Parse "1, 2, 7" (empty allowed).
+  std::set<Label>
+  parse_label_set(const std::string &text, const std::string &parameter);
+
+  /// "1, 2, 7" for messages.
+  std::string
+  to_string(const std::set<Label> &labels);
+} // namespace RestShape
+
+#endif

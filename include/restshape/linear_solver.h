@@ -1,0 +1,64 @@
+// Linear solves of the Newton systems: sparse direct or CG + ML AMG.
+#ifndef restshape_linear_solver_h
+#define restshape_linear_solver_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <restshape/parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
+
+namespace RestShape
+{
+  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+  class LinearSolver
+  {
+  public:
+    LinearSolver(const SolverParameters &parameters, const unsigned int degree);
+    ~LinearSolver();
+
+    /**
+     * The six rigid-body modes (three translations, three rotations), each
+     * with one value per locally owned degree of freedom, in the order of
+     * the locally owned index set. Used as AMG null space.
+     */
+    void
+    set_rigid_body_modes(std::vector<std::vector<double>> modes);
+
+    /**
+     * Solve A x = b. Returns the number of iterations (1 for the direct
+     * solver). Throws SolverFailure with the figures if it cannot.
+     */
+    unsigned int
+    solve(const MatrixType &A, VectorType &x, const VectorType &b);
+
+    /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG").
+    std::string last_method;
+
+  private:
+    unsigned int
+    solve_iteratively(const MatrixType &A, VectorType &x, const VectorType &b);
+    void
+    solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
+
+    /// MUMPS, kept between solves with the same matrix object so that the
+    /// symbolic factorisation (METIS ordering) is done once per mesh.
+    std::unique_ptr<Epetra_LinearProblem> direct_problem;
+    std::unique_ptr<Amesos_BaseSolver>    direct_solver;
+    const void *                          factored_matrix = nullptr;
+
+    const SolverParameters           parameters;
+    const unsigned int               degree;
+    std::vector<std::vector<double>> rigid_body_modes;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,124 @@
+// The labelled mesh: reading, checking, tetrahedron-to-hexahedron splitting,
+// refinement and writing back to gmsh.
+#ifndef restshape_mesh_h
+#define restshape_mesh_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+
+#include <restshape/label_values.h>
+#include <restshape/parameters.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  /// Vertices (in metres) and cells with labels, before a Triangulation.
+  struct MeshDescription
+  {
+    std::vector<dealii::Point<3>>    vertices;
+    std::vector<dealii::CellData<3>> cells;
+  };
+
+  /**
+   * Read a gmsh file into a description in metres. Throws InputError naming
+   * the file and "Mesh/File" for missing, unreadable or malformed files and
+   * for meshes that are not purely tetrahedral or purely hexahedral.
+   */
+  MeshDescription
+  read_gmsh(const std::string &file, const double length_unit);
+
+  /**
+   * Check coordinates and cell orientation: every vertex finite, every cell
+   * with a positive Jacobian determinant at its corners (deal.II's vertex
+   * order). Throws InputError naming @p file for NaN coordinates and for
+   * inverted or zero-volume cells.
+   */
+  void
+  check_mesh(const MeshDescription &mesh, const std::string &file);
+
+  /**
+   * Red refinement of every tetrahedron into eight (Bey 1995): four corner
+   * tetrahedra and the inner octahedron split along its shortest diagonal,
+   * which keeps the shape quality bounded over many levels (deal.II 9.4's
+   * own refinement of tetrahedra uses a fixed diagonal and degrades it).
+   */
+  MeshDescription
+  refine_tetrahedra(const MeshDescription &tets);
+
+  /// Split every tetrahedron into four hexahedra (labels kept).
+  MeshDescription
+  split_tetrahedra_into_hexahedra(const MeshDescription &tets);
+
+  /**
+   * Write the active cells of @p tria as gmsh 2.2 ASCII with labels as
+   * physical volume tags. Vertex v is written at position(v) divided by
+   * @p length_unit. Written atomically.
+   */
+  void
+  write_gmsh(const dealii::Triangulation<3> &                   tria,
+             const std::function<dealii::Point<3>(unsigned int)> &position,
+             const double                                         length_unit,
+             const std::string &                                  file);
+
+  /**
+   * The computational mesh of a scene: the triangulation (distributed when
+   * run under MPI: shared for tetrahedra, p4est for hexahedra) and its
+   * labels.
+   */
+  class LabelledMesh
+  {
+  public:
+    LabelledMesh(const MeshParameters &parameters, const MPI_Comm comm);
+
+    dealii::Triangulation<3> &
+    triangulation();
+    const dealii::Triangulation<3> &
+    triangulation() const;
+
+    bool
+    is_simplex() const;
+
+    /// Labels present in the mesh, with their cell counts (coarse mesh).
+    const std::map<Label, unsigned int> &
+    label_counts() const;
+
+    std::set<Label>
+    labels() const;
+
+    /// Diagonal of the bounding box (m).
+    double
+    diameter() const;
+
+    /// Smallest cell diameter of the active mesh (m).
+    double
+    minimum_cell_diameter() const;
+
+    /**
+     * Refine every cell once: tetrahedra by red refinement of the mesh
+     * description (the triangulation is rebuilt: DoFHandlers must be
+     * re-initialised), hexahedra by deal.II.
+     */
+    void
+    refine_global();
+
+    const MeshParameters parameters;
+
+  private:
+    void
+    create_triangulation();
+
+    MeshDescription                          description; // tetrahedra only
+    std::unique_ptr<dealii::Triangulation<3>> tria;
+    std::map<Label, unsigned int>            counts;
+    double                                   bounding_diameter;
+  };
+} // namespace RestShape
+
+#endif

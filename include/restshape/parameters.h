@@ -1,0 +1,173 @@
+// One parameter struct per subsection of the .prm file.
+//
+// Every struct declares its entries (with defaults and documentation that
+// `restshape --print-parameters` shows) and parses them into typed members
+// in SI units. Range errors throw InputError naming "Subsection/Parameter".
+#ifndef restshape_parameters_h
+#define restshape_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <restshape/label_values.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  enum class CellType
+  {
+    tetrahedra,
+    hexahedra
+  };
+
+  enum class TangentType
+  {
+    consistent,
+    warped
+  };
+
+  enum class LinearSolverType
+  {
+    direct,
+    cg_amg
+  };
+
+  /// Parse a length unit name ("mm" or "m") into metres per unit.
+  double
+  length_unit_in_metres(const std::string &name, const std::string &parameter);
+
+  struct MeshParameters
+  {
+    std::string  file;
+    std::string  length_unit_name; // "mm" or "m"
+    double       length_unit;      // metres per unit of the file
+    CellType     cell_type;
+    unsigned int global_refinements;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct DiscretizationParameters
+  {
+    unsigned int degree;
+    TangentType  tangent;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct MaterialParameters
+  {
+    LabelValues youngs_modulus;  // Pa
+    LabelValues poissons_ratio;  // -
+    LabelValues density;         // kg/m^3
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct BoundaryParameters
+  {
+    std::vector<FixedLabel> fixed_labels;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct LoadParameters
+  {
+    dealii::Tensor<1, 3> gravity;  // m/s^2
+    double               pressure; // Pa, positive pushes inward
+    std::set<Label>      pressure_labels; // empty: all unfixed labels
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct SolverParameters
+  {
+    LinearSolverType linear_solver;
+    double           newton_tolerance;
+    unsigned int     max_newton_iterations;
+    double           linear_tolerance;
+    unsigned int     max_load_step_halvings;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string directory;
+    bool        write_vtu;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct VerificationParameters
+  {
+    std::string exact_displacement; // muparser, 3 components; empty: none
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct RefinementParameters
+  {
+    enum class Strategy
+    {
+      global,
+      adaptive
+    };
+    unsigned int cycles;
+    Strategy     strategy;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// All subsections together: what a scene file describes.
+  struct Parameters
+  {
+    MeshParameters           mesh;
+    DiscretizationParameters discretization;
+    MaterialParameters       materials;
+    BoundaryParameters       boundary;
+    LoadParameters           loads;
+    SolverParameters         solver;
+    OutputParameters         output;
+    VerificationParameters   verification;
+    RefinementParameters     refinement;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Throws InputError (without file name; the caller adds it).
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,79 @@
+// A scene run from start to end, in a fixed order (as in step-42):
+// mesh, materials, checks, then for every refinement cycle setup, solve,
+// postprocess; finally the summary and the timing table.
+#ifndef restshape_simulator_h
+#define restshape_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <restshape/forward_problem.h>
+#include <restshape/material.h>
+#include <restshape/mesh.h>
+#include <restshape/output.h>
+#include <restshape/parameters.h>
+#include <restshape/verification.h>
+
+#include <memory>
+
+namespace RestShape
+{
+  class Simulator
+  {
+  public:
+    /**
+     * @p prm holds the effective parameters (written to parameters.prm),
+     * @p prm_file is the scene file (for messages).
+     */
+    Simulator(const Parameters &              parameters,
+              const dealii::ParameterHandler &prm,
+              const std::string &             prm_file,
+              const MPI_Comm                  comm);
+
+    /**
+     * Run the scene. Input errors throw InputError before anything is
+     * written; a solver that fails writes summary.json (converged = false,
+     * with its figures) and throws SolverFailure.
+     */
+    void
+    run();
+
+  private:
+    void
+    make_mesh();
+    void
+    check_scene() const;
+    void
+    prepare_output();
+    SolveStatistics
+    solve_forward();
+    void
+    postprocess(const unsigned int cycle, const SolveStatistics &stats);
+    void
+    refine();
+    void
+    write_summary(const SolveStatistics &stats);
+
+    const Parameters &              parameters;
+    const dealii::ParameterHandler &prm;
+    const std::string               prm_file;
+    const MPI_Comm                  comm;
+    dealii::ConditionalOStream      pcout;
+    dealii::TimerOutput             timer;
+    dealii::Timer                   wall_timer;
+
+    std::unique_ptr<LabelledMesh>      mesh;
+    std::unique_ptr<MaterialTable>     materials;
+    std::unique_ptr<ForwardProblem>    forward;
+    std::unique_ptr<OutputWriter>      output;
+    std::unique_ptr<ExactDisplacement> exact;
+
+    Summary                          summary;
+    dealii::ConvergenceTable         convergence_table;
+    std::vector<std::vector<double>> convergence_rows;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,151 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <restshape/input_error.h>
+#include <restshape/linear_solver.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  LinearSolver::LinearSolver(const SolverParameters &parameters,
+                             const unsigned int      degree)
+    : parameters(parameters)
+    , degree(degree)
+  {}
+
+  LinearSolver::~LinearSolver() = default;
+
+  void
+  LinearSolver::set_rigid_body_modes(std::vector<std::vector<double>> modes)
+  {
+    rigid_body_modes = std::move(modes);
+  }
+
+  unsigned int
+  LinearSolver::solve(const MatrixType &A, VectorType &x, const VectorType &b)
+  {
+    if (parameters.linear_solver == LinearSolverType::cg_amg)
+      return solve_iteratively(A, x, b);
+
+    solve_directly(A, x, b);
+    for (const double v : x)
+      if (!std::isfinite(v))
+        throw SolverFailure("the direct solver (MUMPS) returned NaN: the "
+                            "matrix is singular (check that the scene fixes "
+                            "every rigid-body motion)");
+    last_method = "MUMPS";
+    return 1;
+  }
+
+  void
+  LinearSolver::solve_directly(const MatrixType &A, VectorType &x, const VectorType &b)
+  {
+    Epetra_CrsMatrix &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+    if (factored_matrix != &matrix)
+      {
+        // New matrix object (new mesh): new symbolic factorisation.
+        direct_solver.reset();
+        direct_problem = std::make_unique<Epetra_LinearProblem>();
+        direct_problem->SetOperator(&matrix);
+        Amesos factory;
+        direct_solver.reset(factory.Create("Amesos_Mumps", *direct_problem));
+        AssertThrow(direct_solver != nullptr, ExcMessage("MUMPS is not available in Amesos"));
+        Teuchos::ParameterList list;
+        // The tangent is symmetric (possibly indefinite): LDL^T.
+        list.set("MatrixProperty", "symmetric");
+        direct_solver->SetParameters(list);
+        auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get());
+        mumps->SetICNTL(7, 5);  // METIS ordering
+        mumps->SetICNTL(14, 50); // 50 % workspace margin
+        if (direct_solver->SymbolicFactorization() != 0)
+          throw SolverFailure("MUMPS: symbolic factorisation failed");
+        factored_matrix = &matrix;
+      }
+    direct_problem->SetLHS(&x.trilinos_vector());
+    direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+    const int status = direct_solver->NumericFactorization();
+    if (status != 0)
+      throw SolverFailure("the direct solver (MUMPS) could not factorise the "
+                          "matrix with " + std::to_string(A.m()) +
+                          " unknowns (error " + std::to_string(status) +
+                          "): singular matrix? check that the scene fixes "
+                          "every rigid-body motion");
+    direct_solver->Solve();
+  }
+
+  unsigned int
+  LinearSolver::solve_iteratively(const MatrixType &A,
+                                  VectorType &      x,
+                                  const VectorType &b)
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = (degree > 1);
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(list, unused, A.trilinos_matrix());
+
+    const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+    Epetra_MultiVector modes(map, rigid_body_modes.size());
+    for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
+      for (int i = 0; i < map.NumMyElements(); ++i)
+        modes[m][i] = rigid_body_modes[m][i];
+    if (!rigid_body_modes.empty())
+      {
+        list.set("null space: type", "pre-computed");
+        list.set("null space: dimension", modes.NumVectors());
+        list.set("null space: vectors", modes.Values());
+      }
+    TrilinosWrappers::PreconditionAMG amg;
+    amg.initialize(A.trilinos_matrix(), list);
+
+    const double   target = parameters.linear_tolerance * b.l2_norm();
+    SolverControl  control(2000, target);
+    try
+      {
+        SolverCG<VectorType> cg(control);
+        cg.solve(A, x, b, amg);
+        last_method = "CG+AMG";
+        return control.last_step();
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        // The consistent co-rotational tangent can be indefinite at large
+        // strains: GMRES does not need definiteness.
+      }
+    x = 0;
+    SolverControl gmres_control(5000, target);
+    try
+      {
+        SolverGMRES<VectorType> gmres(
+          gmres_control, SolverGMRES<VectorType>::AdditionalData(200));
+        gmres.solve(A, x, b, amg);
+      }
+    catch (const SolverControl::NoConvergence &exc)
+      {
+        throw SolverFailure(
+          "the iterative solver did not converge: CG stopped after " +
+          std::to_string(control.last_step()) + " and GMRES after " +
+          std::to_string(exc.last_step) + " iterations with residual " +
+          std::to_string(exc.last_residual) + " (target " +
+          std::to_string(target) + "); try Linear solver = direct");
+      }
+    last_method = "GMRES+AMG";
+    return control.last_step() + gmres_control.last_step();
+  }
+} // namespace RestShape

@@ -1,0 +1,413 @@
+#include <deal.II/base/utilities.h>
+
+#include <restshape/input_error.h>
+#include <restshape/parameters.h>
+
+#include <cmath>
+
+namespace RestShape
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    dealii::Tensor<1, 3>
+    parse_vector(const std::string &text, const std::string &parameter)
+    {
+      const auto items = dealii::Utilities::split_string_list(text, ',');
+      dealii::Tensor<1, 3> v;
+      bool                 ok = (items.size() == 3);
+      for (unsigned int d = 0; ok && d < 3; ++d)
+        {
+          std::size_t pos = 0;
+          try
+            {
+              v[d] = std::stod(items[d], &pos);
+            }
+          catch (...)
+            {
+              ok = false;
+            }
+          ok = ok && pos == items[d].size() && std::isfinite(v[d]);
+        }
+      if (!ok)
+        throw InputError("",
+                         parameter,
+                         "'" + text +
+                           "' is not a vector; expected three numbers "
+                           "'x, y, z'");
+      return v;
+    }
+  } // namespace
+
+  double
+  length_unit_in_metres(const std::string &name, const std::string &parameter)
+  {
+    if (name == "mm")
+      return 1e-3;
+    if (name == "m")
+      return 1.0;
+    throw InputError("",
+                     parameter,
+                     "unknown length unit '" + name + "'; expected mm or m");
+  }
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("File",
+                      "meshes/column_tet.msh",
+                      Patterns::FileName(),
+                      "Gmsh mesh file (.msh, format 2.2 or 4.1, ASCII). "
+                      "Physical volume tags become the labels used by "
+                      "Materials, Boundary conditions and Loads. Relative "
+                      "paths are relative to the working directory.");
+    prm.declare_entry("Length unit",
+                      "mm",
+                      Patterns::Selection("mm|m"),
+                      "Unit of the coordinates in the mesh file. Internally "
+                      "everything is SI; outputs use this unit for lengths.");
+    prm.declare_entry("Cell type",
+                      "tetrahedra",
+                      Patterns::Selection("tetrahedra|hexahedra"),
+                      "tetrahedra: use the tetrahedra of the file. "
+                      "hexahedra: split every tetrahedron into four "
+                      "hexahedra (edge midpoints, face centroids, centroid), "
+                      "keeping labels; a hexahedral file is used as is.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 8),
+                      "Number of uniform refinements of the mesh (each "
+                      "splits every cell into 8).");
+    prm.leave_subsection();
+  }
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    file = prm.get("File");
+    if (file.empty())
+      throw InputError("", "Mesh/File", "no mesh file given");
+    length_unit_name = prm.get("Length unit");
+    length_unit = length_unit_in_metres(length_unit_name, "Mesh/Length unit");
+    cell_type   = prm.get("Cell type") == "hexahedra" ? CellType::hexahedra :
+                                                        CellType::tetrahedra;
+    global_refinements = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+  }
+
+  void
+  DiscretizationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Polynomial degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Degree of the Lagrange elements: 1 (P1 tetrahedra or "
+                      "Q1 hexahedra) or 2 (P2 / Q2).");
+    prm.declare_entry("Tangent",
+                      "consistent",
+                      Patterns::Selection("consistent|warped"),
+                      "Newton tangent of the co-rotational law. consistent: "
+                      "exact derivative including the derivative of the "
+                      "rotation (quadratic convergence). warped: R K0 R^T as "
+                      "in SOFA and Mueller et al. 2002 (no dR term; linear "
+                      "convergence), kept for comparison.");
+    prm.leave_subsection();
+  }
+
+  void
+  DiscretizationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    degree  = prm.get_integer("Polynomial degree");
+    tangent = prm.get("Tangent") == "warped" ? TangentType::warped :
+                                               TangentType::consistent;
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    prm.declare_entry("Young's modulus",
+                      "1500",
+                      Patterns::Anything(),
+                      "Young's modulus in Pa: one value for all labels, or "
+                      "'label:value, label:value' with every label of the "
+                      "mesh listed. Must be > 0.");
+    prm.declare_entry("Poisson's ratio",
+                      "0.45",
+                      Patterns::Anything(),
+                      "Poisson's ratio, in (-1, 0.5): one value or "
+                      "'label:value' list.");
+    prm.declare_entry("Density",
+                      "1040",
+                      Patterns::Anything(),
+                      "Density in kg/m^3 of the tissue as imaged (the mass "
+                      "of every cell is taken from the mesh geometry and "
+                      "kept when the rest shape changes): one value or "
+                      "'label:value' list. Must be >= 0.");
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    youngs_modulus = LabelValues::parse(prm.get("Young's modulus"),
+                                        "Materials/Young's modulus");
+    poissons_ratio = LabelValues::parse(prm.get("Poisson's ratio"),
+                                        "Materials/Poisson's ratio");
+    density = LabelValues::parse(prm.get("Density"), "Materials/Density");
+    prm.leave_subsection();
+
+    const auto where = [](const Label l) {
+      return l == dealii::numbers::invalid_material_id ?
+               std::string(" (all labels)") :
+               " for label " + std::to_string(l);
+    };
+    for (const auto &[label, E] : youngs_modulus.listed())
+      if (!(E > 0))
+        throw InputError("",
+                         "Materials/Young's modulus",
+                         "E = " + std::to_string(E) + " Pa" + where(label) +
+                           "; expected E > 0");
+    for (const auto &[label, nu] : poissons_ratio.listed())
+      if (!(nu > -1 && nu < 0.5))
+        throw InputError("",
+                         "Materials/Poisson's ratio",
+                         "nu = " + std::to_string(nu) + where(label) +
+                           "; expected -1 < nu < 0.5");
+    for (const auto &[label, rho] : density.listed())
+      if (!(rho >= 0))
+        throw InputError("",
+                         "Materials/Density",
+                         "rho = " + std::to_string(rho) + " kg/m^3" +
+                           where(label) + "; expected rho >= 0");
+  }
+
+  void
+  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Fixed labels",
+                      "",
+                      Patterns::Anything(),
+                      "Labels whose nodes are fixed (zero displacement): "
+                      "'label' fixes all components of every node of the "
+                      "cells with that label, 'label:xy' only the listed "
+                      "components. Example: '3, 5:xy'.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
+                                      "Boundary conditions/Fixed labels");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry("Gravity",
+                      "0, 0, -9.81",
+                      Patterns::Anything(),
+                      "Gravitational acceleration in m/s^2, 'x, y, z' in the "
+                      "mesh's coordinate frame.");
+    prm.declare_entry("Surface pressure",
+                      "0",
+                      Patterns::Double(),
+                      "Uniform pressure in Pa on the outer surface (e.g. "
+                      "CSF), acting along the inward normal. It is a dead "
+                      "load on the mesh (target) geometry.");
+    prm.declare_entry("Pressure labels",
+                      "",
+                      Patterns::Anything(),
+                      "The pressure acts on the outer faces of cells with "
+                      "these labels; empty: all labels that are not fully "
+                      "fixed.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    gravity  = parse_vector(prm.get("Gravity"), "Loads/Gravity");
+    pressure = prm.get_double("Surface pressure");
+    pressure_labels =
+      parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Linear solver",
+                      "direct",
+                      Patterns::Selection("direct|cg-amg"),
+                      "direct: sparse LU (MUMPS through Trilinos Amesos). "
+                      "cg-amg: conjugate gradients preconditioned by "
+                      "Trilinos ML algebraic multigrid built with the six "
+                      "rigid-body modes (GMRES if CG breaks down).");
+    prm.declare_entry("Newton tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "Newton stops when the residual norm (N) is below this "
+                      "fraction of the norm of the external load vector.");
+    prm.declare_entry("Maximum Newton iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Newton iterations per load step before the step is "
+                      "halved.");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-8",
+                      Patterns::Double(0, 1),
+                      "Relative residual reduction of the iterative linear "
+                      "solver (cg-amg) in every Newton step.");
+    prm.declare_entry("Maximum load step halvings",
+                      "10",
+                      Patterns::Integer(0, 30),
+                      "When Newton fails, the load (or rest-shape change) "
+                      "increment is halved at most this many times before "
+                      "the solve is declared failed.");
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    linear_solver = prm.get("Linear solver") == "cg-amg" ?
+                      LinearSolverType::cg_amg :
+                      LinearSolverType::direct;
+    newton_tolerance       = prm.get_double("Newton tolerance");
+    max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
+    linear_tolerance       = prm.get_double("Linear solver tolerance");
+    max_load_step_halvings = prm.get_integer("Maximum load step halvings");
+    prm.leave_subsection();
+    if (!(newton_tolerance > 0))
+      throw InputError("",
+                       "Solver/Newton tolerance",
+                       "expected a positive number");
+  }
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Directory for all results (created if missing). "
+                      "Files are written under a temporary name and renamed, "
+                      "so an interrupted run never leaves half a file.");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write the VTU/PVTU fields and the .pvd/.visit "
+                      "records. Turn off for benchmarks; summary.json and "
+                      "the .csv files are always written.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory = prm.get("Directory");
+    write_vtu = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+    if (directory.empty())
+      throw InputError("", "Output/Directory", "no directory given");
+  }
+
+  void
+  VerificationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    prm.declare_entry("Exact displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Optional exact displacement for verification: three "
+                      "muparser expressions 'ux; uy; uz' in the mesh's "
+                      "length unit, functions of the reference coordinates "
+                      "x, y, z (same unit). When given, the L2 and H1 errors "
+                      "are computed and written to convergence.csv.");
+    prm.leave_subsection();
+  }
+
+  void
+  VerificationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    exact_displacement = dealii::Utilities::trim(prm.get("Exact displacement"));
+    prm.leave_subsection();
+  }
+
+  void
+  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptive refinement");
+    prm.declare_entry("Cycles",
+                      "0",
+                      Patterns::Integer(0, 10),
+                      "Number of refinement cycles after the first solve; "
+                      "every cycle refines, solves again and appends a row "
+                      "to convergence.csv.");
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection("global|adaptive"),
+                      "global: refine every cell. adaptive: refine where the "
+                      "estimated error is largest (hexahedra only: deal.II "
+                      "9.4 has no hanging nodes on tetrahedra).");
+    prm.leave_subsection();
+  }
+
+  void
+  RefinementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptive refinement");
+    cycles   = prm.get_integer("Cycles");
+    strategy = prm.get("Strategy") == "adaptive" ? Strategy::adaptive :
+                                                   Strategy::global;
+    prm.leave_subsection();
+  }
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    MeshParameters::declare_parameters(prm);
+    DiscretizationParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
+    RefinementParameters::declare_parameters(prm);
+  }
+
+  void
+  Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    mesh.parse_parameters(prm);
+    discretization.parse_parameters(prm);
+    materials.parse_parameters(prm);
+    boundary.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+    verification.parse_parameters(prm);
+    refinement.parse_parameters(prm);
+  }
+} // namespace RestShape
