@@ -483,6 +483,7 @@ namespace RestShape
     const double tol = parameters.solver.newton_tolerance;
 
     double reference = 0;
+    stats.residual_history.clear();
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
          ++it)
       {
@@ -552,6 +553,8 @@ namespace RestShape
                       std::to_string(stats.linear_iterations) + " its" :
                     std::string())
               << std::endl;
+        if (accepted)
+          stats.residual_history.push_back(trial_residual / reference);
         if (!accepted)
           {
             d       = d_start;

@@ -2,6 +2,7 @@
 
 #include <restshape/input_error.h>
 
+#include <regex>
 #include <sstream>
 
 namespace RestShape
@@ -65,6 +66,16 @@ namespace RestShape
           result += c;
           space = false;
         }
-    return result;
+    // ParameterHandler: "Line <3> of file <scene.prm>: ..." -> "line 3: ...".
+    static const std::regex prm_location("Line <([0-9]+)> of file <[^>]*>?:");
+    return std::regex_replace(result, prm_location, "line $1:");
+  }
+
+  std::string
+  number_text(const double value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
   }
 } // namespace RestShape

@@ -97,14 +97,14 @@ main(int argc, char **argv)
           else if (arg.rfind("--set=", 0) == 0)
             overrides.push_back(arg.substr(6));
           else if (!arg.empty() && arg[0] == '-')
-            throw InputError(arg, "", std::string("unknown option; ") + usage);
+            throw InputError(arg, "", "unknown option; see restshape --help");
           else if (prm_file.empty())
             prm_file = arg;
           else
             throw InputError(arg, "", "more than one scene file given");
         }
       if (prm_file.empty())
-        throw InputError("", "", std::string("no scene file given; ") + usage);
+        throw InputError("", "", "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
       std::error_code ec;
       if (!std::filesystem::is_regular_file(prm_file, ec))
         throw InputError(prm_file, "", "no such scene file");
@@ -122,8 +122,22 @@ main(int argc, char **argv)
 
       Parameters parameters;
       parameters.parse_parameters(prm);
-      Simulator simulator(parameters, prm, prm_file, comm);
-      simulator.run();
+      // Destroy the simulator (and its TimerOutput, which prints a banner
+      // when destroyed during stack unwinding) before reporting an error.
+      std::exception_ptr error;
+      {
+        Simulator simulator(parameters, prm, prm_file, comm);
+        try
+          {
+            simulator.run();
+          }
+        catch (...)
+          {
+            error = std::current_exception();
+          }
+      }
+      if (error)
+        std::rethrow_exception(error);
     }
   catch (const InputError &exc)
     {

@@ -1,12 +1,14 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
+
+#include <gmsh.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -86,50 +88,130 @@ namespace RestShape
       throw InputError(file,
                        file_parameter,
                        "no such file; expected a gmsh .msh mesh");
-    if (!fs::is_regular_file(file, ec))
+    if (!fs::is_regular_file(file, ec) || ::access(file.c_str(), R_OK) != 0)
       throw InputError(file,
                        file_parameter,
-                       "not a regular file; expected a gmsh .msh mesh");
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file,
-                       file_parameter,
-                       "cannot be read (permissions?); expected a readable "
-                       "gmsh .msh mesh");
+                       "not a readable file; expected a gmsh .msh mesh");
 
-    Triangulation<3> tria;
-    GridIn<3>        grid_in;
-    grid_in.attach_triangulation(tria);
+    // The gmsh library reads every .msh version (ASCII or binary) and, unlike
+    // GridIn (which silently reorders the vertices of inverted tetrahedra),
+    // returns the connectivity in file order, which the orientation check
+    // needs.
+    MeshDescription result;
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 0);
     try
       {
-        grid_in.read_msh(in);
+        gmsh::open(file);
+
+        std::vector<std::size_t> node_tags;
+        std::vector<double>      coordinates, parametric;
+        gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
+        std::map<std::size_t, unsigned int> index;
+        for (unsigned int n = 0; n < node_tags.size(); ++n)
+          {
+            for (unsigned int d = 0; d < 3; ++d)
+              if (!std::isfinite(coordinates[3 * n + d]))
+                throw InputError(file,
+                                 file_parameter,
+                                 "node " + std::to_string(node_tags[n]) +
+                                   " has a coordinate that is not a finite number");
+            index[node_tags[n]] = n;
+            result.vertices.emplace_back(coordinates[3 * n] * length_unit,
+                                         coordinates[3 * n + 1] * length_unit,
+                                         coordinates[3 * n + 2] * length_unit);
+          }
+
+        gmsh::vectorpair entities;
+        gmsh::model::getEntities(entities, 3);
+        for (const auto &[dim, entity] : entities)
+          {
+            // The label: the entity's physical group, or its own tag.
+            std::vector<int> physical;
+            gmsh::model::getPhysicalGroupsForEntity(dim, entity, physical);
+            const int label = physical.empty() ? entity : physical[0];
+            if (label < 0 || label > 65535)
+              throw InputError(file, file_parameter,
+                               "volume tag " + std::to_string(label) +
+                                 " is not a valid label; expected 0..65535");
+
+            std::vector<int>                      types;
+            std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+            gmsh::model::mesh::getElements(types, element_tags, element_nodes, dim, entity);
+            for (unsigned int t = 0; t < types.size(); ++t)
+              {
+                if (types[t] != 4 && types[t] != 5)
+                  throw InputError(file,
+                                   file_parameter,
+                                   "the mesh has 3d elements of gmsh type " +
+                                     std::to_string(types[t]) +
+                                     "; expected only linear tetrahedra (4) or "
+                                     "hexahedra (5)");
+                const unsigned int n = (types[t] == 4 ? 4 : 8);
+                // gmsh numbers hexahedron vertices counter-clockwise per face.
+                static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+                for (unsigned int e = 0; e < element_tags[t].size(); ++e)
+                  {
+                    CellData<3> cell(n);
+                    for (unsigned int v = 0; v < n; ++v)
+                      {
+                        const auto it =
+                          index.find(element_nodes[t][n * e + (n == 4 ? v : hex_order[v])]);
+                        if (it == index.end())
+                          throw InputError(file, file_parameter,
+                                           "element " + std::to_string(element_tags[t][e]) +
+                                             " refers to a node that does not exist");
+                        cell.vertices[v] = it->second;
+                      }
+                    cell.material_id = label;
+                    result.cells.push_back(cell);
+                  }
+              }
+          }
       }
-    catch (const std::exception &exc)
+    catch (const InputError &)
       {
+        gmsh::finalize();
+        throw;
+      }
+    catch (...)
+      {
+        std::string message;
+        gmsh::logger::getLastError(message);
+        gmsh::finalize();
         throw InputError(file,
                          file_parameter,
-                         "not a valid gmsh mesh (" + one_line_message(exc) +
-                           "); expected gmsh format 2.2 or 4.1 ASCII with "
-                           "3d cells");
+                         "not a valid gmsh mesh (" +
+                           (message.empty() ? std::string("unreadable") : message) +
+                           "); expected a gmsh .msh file with 3d cells");
       }
-    if (tria.n_active_cells() == 0)
+    gmsh::finalize();
+
+    if (result.cells.empty())
       throw InputError(file, file_parameter, "the mesh has no 3d cells");
-
-    MeshDescription result;
-    std::tie(result.vertices, result.cells, std::ignore) =
-      GridTools::get_coarse_mesh_description(tria);
-    for (auto &v : result.vertices)
-      v *= length_unit;
-
     const std::size_t n_vertices_per_cell = result.cells[0].vertices.size();
     for (const auto &cell : result.cells)
-      if (cell.vertices.size() != n_vertices_per_cell ||
-          (n_vertices_per_cell != 4 && n_vertices_per_cell != 8))
+      if (cell.vertices.size() != n_vertices_per_cell)
         throw InputError(file,
                          file_parameter,
-                         "the mesh mixes cell types or has prisms or "
-                         "pyramids; expected only tetrahedra or only "
-                         "hexahedra");
+                         "the mesh mixes tetrahedra and hexahedra; expected "
+                         "only one cell type");
+
+    // Drop vertices that no cell uses (e.g. of boundary-only entities).
+    std::vector<int> new_index(result.vertices.size(), -1);
+    std::vector<Point<3>> used;
+    for (auto &cell : result.cells)
+      for (auto &v : cell.vertices)
+        {
+          if (new_index[v] < 0)
+            {
+              new_index[v] = used.size();
+              used.push_back(result.vertices[v]);
+            }
+          v = new_index[v];
+        }
+    result.vertices = std::move(used);
     return result;
   }
 

@@ -174,19 +174,19 @@ namespace RestShape
       if (!(E > 0))
         throw InputError("",
                          "Materials/Young's modulus",
-                         "E = " + std::to_string(E) + " Pa" + where(label) +
+                         "E = " + number_text(E) + " Pa" + where(label) +
                            "; expected E > 0");
     for (const auto &[label, nu] : poissons_ratio.listed())
       if (!(nu > -1 && nu < 0.5))
         throw InputError("",
                          "Materials/Poisson's ratio",
-                         "nu = " + std::to_string(nu) + where(label) +
+                         "nu = " + number_text(nu) + where(label) +
                            "; expected -1 < nu < 0.5");
     for (const auto &[label, rho] : density.listed())
       if (!(rho >= 0))
         throw InputError("",
                          "Materials/Density",
-                         "rho = " + std::to_string(rho) + " kg/m^3" +
+                         "rho = " + number_text(rho) + " kg/m^3" +
                            where(label) + "; expected rho >= 0");
   }
 

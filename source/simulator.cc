@@ -219,7 +219,6 @@ namespace RestShape
         ConvergenceTable table = convergence_table;
         table.evaluate_convergence_rates("L2_rel", ConvergenceTable::reduction_rate_log2);
         table.evaluate_convergence_rates("H1_rel", ConvergenceTable::reduction_rate_log2);
-        table.evaluate_convergence_rates("max_nodal_mm", ConvergenceTable::reduction_rate_log2);
         output->write_text("convergence.txt", [&](std::ostream &out) { table.write_text(out); });
         if (cycle == parameters.refinement.cycles)
           table.write_text(pcout.get_stream());

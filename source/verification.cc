@@ -4,6 +4,9 @@
 #include <restshape/input_error.h>
 #include <restshape/verification.h>
 
+#include <iostream>
+#include <sstream>
+
 namespace RestShape
 {
   using namespace dealii;
@@ -14,7 +17,7 @@ namespace RestShape
   public:
     SIFunction(const std::string &expressions, const double unit)
       : Function<3>(3)
-      , parser(3, 0., 1e-6)
+      , parser(3, 0., 1e-3)
       , unit(unit)
     {
       std::map<std::string, double> constants;
@@ -42,14 +45,21 @@ namespace RestShape
   ExactDisplacement::ExactDisplacement(const std::string &expressions,
                                        const double       length_unit)
   {
+    // deal.II's FunctionParser prints muparser's messages to std::cerr
+    // before it throws; keep them off the terminal (we report one line).
+    std::ostringstream silenced;
+    std::streambuf *   cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
     try
       {
         auto f = std::make_unique<SIFunction>(expressions, length_unit);
-        f->value(Point<3>(), 0); // muparser reports some errors only here
+        for (unsigned int c = 0; c < 3; ++c)
+          f->value(Point<3>(), c); // muparser reports some errors only here
         function = std::move(f);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const std::exception &exc)
       {
+        std::cerr.rdbuf(cerr_buffer);
         throw InputError("",
                          "Verification/Exact displacement",
                          "cannot parse '" + expressions + "' (" +

@@ -52,6 +52,8 @@ namespace RestShape
     double       residual           = 0; // final, N
     double       reference          = 0; // norm of the external loads, N
     std::string  failure;                // why it did not converge
+    /// |R|/|f| after every accepted Newton step of the last load step.
+    std::vector<double> residual_history;
   };
 
   class ForwardProblem

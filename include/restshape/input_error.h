@@ -44,6 +44,10 @@ namespace RestShape
    */
   std::string
   one_line_message(const std::exception &exc);
+
+  /// A number as a user wrote it: "1500", "0.45", "1e-10".
+  std::string
+  number_text(const double value);
 } // namespace RestShape
 
 #endif

@@ -1,0 +1,11 @@
+#!/bin/bash
+# Regenerate the structured test meshes of meshes/ (run from the repository
+# root after building). Lengths in mm; label 2 marks the clamped part.
+set -e
+gen=${GRIDGEN:-build/restshape-gridgen}
+# Gravity column: 20 x 20 x 50 mm, bottom 10 mm clamped (label 2).
+$gen --size 20,20,50 --subdivisions 2,2,5 --slab z:0:10:2 --out meshes/column_tet.msh
+$gen --size 20,20,50 --subdivisions 2,2,5 --slab z:0:10:2 --cell-type tetrahedra24 --out meshes/column_tet24.msh
+$gen --size 20,20,50 --subdivisions 2,2,5 --slab z:0:10:2 --cell-type hexahedra --out meshes/column_hex.msh
+# Cantilever: 100 x 10 x 10 mm, first 10 mm clamped (label 2).
+$gen --size 100,10,10 --subdivisions 20,2,2 --slab x:0:10:2 --out meshes/cantilever_tet.msh
