@@ -10,6 +10,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <restshape/contact.h>
 #include <restshape/forward_problem.h>
 #include <restshape/input_error.h>
 
@@ -115,19 +116,25 @@ namespace RestShape
       {
         mapping_        = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
         cell_quadrature = QGaussSimplex<3>(degree + 1);
-        face_quadrature = QGaussSimplex<2>(degree + 1);
+        face_quadrature_ = QGaussSimplex<2>(degree + 1);
       }
     else
       {
         mapping_        = std::make_unique<MappingQ<3>>(1);
         cell_quadrature = QGauss<3>(degree + 1);
-        face_quadrature = QGauss<2>(degree + 1);
+        face_quadrature_ = QGauss<2>(degree + 1);
       }
   }
 
   ForwardProblem::~ForwardProblem()
   {
     dof_handler_.clear();
+  }
+
+  void
+  ForwardProblem::set_contact(ContactProblem *c)
+  {
+    contact = c;
   }
 
   void
@@ -256,6 +263,8 @@ namespace RestShape
   {
     constraints_newton.clear();
     constraints_newton.reinit(relevant_dofs);
+    if (contact != nullptr)
+      contact->add_constraints(constraints_newton, constraints_base);
     constraints_newton.merge(
       constraints_base,
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
@@ -459,7 +468,7 @@ namespace RestShape
           constraints_newton.distribute_local_to_global(
             c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_newton);
       },
-      ScratchData(*mapping_, fe_, cell_quadrature, face_quadrature),
+      ScratchData(*mapping_, fe_, cell_quadrature, face_quadrature_),
       CopyData(fe_.n_dofs_per_cell()));
 
     residual_raw.compress(VectorOperation::add);
@@ -481,13 +490,20 @@ namespace RestShape
   ForwardProblem::newton(SolveStatistics &stats)
   {
     const double tol = parameters.solver.newton_tolerance;
+    if (contact != nullptr)
+      contact->begin_solve(d_ghost);
 
     double reference = 0;
     stats.residual_history.clear();
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
          ++it)
       {
-        const bool set_changed = false;
+        bool set_changed = false;
+        if (contact != nullptr)
+          {
+            set_changed = contact->update_active_set(d_ghost, residual_raw, it == 1);
+            stats.active_set_changes += set_changed;
+          }
         make_newton_constraints();
 
         if (!assemble(Assemble::residual_and_matrix))
@@ -504,7 +520,8 @@ namespace RestShape
         stats.residual  = residual;
         stats.reference = reference;
 
-        if (residual <= tol * reference)
+        if (residual <= tol * reference &&
+            (contact == nullptr || (!set_changed && contact->is_satisfied())))
           return true;
 
         newton_update = 0;
@@ -520,11 +537,14 @@ namespace RestShape
         // the Newton direction descends where the tangent is positive
         // definite; or, where the energy cannot resolve the change (near
         // convergence) or the tangent is indefinite, the residual norm. A
-        // step that changes the contact constraints is taken whole.
+        // step that changes the contact constraints is taken whole (as far
+        // as contact allows: no step carries the body through the
+        // obstacle).
         const double     energy_start = total_energy;
         const double     slope        = -(residual_condensed * newton_update);
         const VectorType d_start      = d;
-        double           alpha        = 1;
+        const double     alpha_max = contact != nullptr ? contact->max_step(newton_update) : 1.;
+        double           alpha     = alpha_max;
         bool             accepted     = false;
         double           trial_residual = 0;
         for (unsigned int ls = 0; ls < 12 && !accepted; ++ls, alpha *= 0.5)
@@ -536,7 +556,7 @@ namespace RestShape
               continue;
             trial_residual = residual_condensed.l2_norm();
             accepted =
-              (alpha == 1 && set_changed) ||
+              (alpha == alpha_max && set_changed) ||
               trial_residual <= (1 - 1e-4 * alpha) * residual ||
               trial_residual <= tol * reference ||
               (slope < 0 && total_energy <= energy_start + 1e-4 * alpha * slope);
@@ -552,6 +572,7 @@ namespace RestShape
                     ", " + linear_solver->last_method + " " +
                       std::to_string(stats.linear_iterations) + " its" :
                     std::string())
+              << (contact != nullptr ? contact->progress_text() : std::string())
               << std::endl;
         if (accepted)
           stats.residual_history.push_back(trial_residual / reference);
@@ -584,6 +605,8 @@ namespace RestShape
     VectorType       d_converged = d;
     double           s_done = 0, ds = 1;
     unsigned int     halvings = 0;
+    if (contact != nullptr)
+      contact->save_state();
 
     while (s_done < 1)
       {
@@ -603,6 +626,8 @@ namespace RestShape
           {
             s_done      = s;
             d_converged = d;
+            if (contact != nullptr)
+              contact->save_state();
             ++stats.load_steps;
             ds = std::min(2 * ds, 1.);
             continue;
@@ -610,6 +635,8 @@ namespace RestShape
         // Back to the last equilibrium, smaller increment.
         d       = d_converged;
         d_ghost = d;
+        if (contact != nullptr)
+          contact->restore_state();
         if (++halvings > parameters.solver.max_load_step_halvings)
           {
             current_load.acceleration =
@@ -766,7 +793,7 @@ namespace RestShape
     FEValues<3>     fv(*mapping_, fe_, cell_quadrature, update_JxW_values);
     FEFaceValues<3> ffv(*mapping_,
                         fe_,
-                        face_quadrature,
+                        face_quadrature_,
                         update_normal_vectors | update_JxW_values);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -826,6 +853,12 @@ namespace RestShape
   ForwardProblem::fe() const
   {
     return fe_;
+  }
+
+  const Quadrature<2> &
+  ForwardProblem::face_quadrature() const
+  {
+    return face_quadrature_;
   }
 
   const AffineConstraints<double> &

@@ -384,6 +384,58 @@ namespace RestShape
   }
 
   void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Obstacle file",
+                      "",
+                      Patterns::Anything(),
+                      "Rigid obstacle: a closed, outward-oriented triangulated "
+                      "surface (.stl, .off or .obj), e.g. the inner surface of "
+                      "the skull. Empty: no contact.");
+    prm.declare_entry("Length unit",
+                      "mm",
+                      Patterns::Selection("mm|m"),
+                      "Unit of the obstacle file's coordinates.");
+    prm.declare_entry("Side",
+                      "inside",
+                      Patterns::Selection("inside|outside"),
+                      "inside: nodes must stay inside the closed surface (a "
+                      "skull); outside: nodes must stay outside it (an "
+                      "obstacle). One-sided, as in Morin et al. 2015: a node "
+                      "that is on the wrong side when a solve starts is free "
+                      "until it has come back to the allowed side.");
+    prm.declare_entry("Contact labels",
+                      "",
+                      Patterns::Anything(),
+                      "Labels whose boundary nodes may touch the obstacle; "
+                      "empty: all labels.");
+    prm.declare_entry("Active set constant",
+                      "100",
+                      Patterns::Double(0),
+                      "c in the complementarity function max(0, p - c g) of "
+                      "the primal-dual active set, as a multiple of E_max / h "
+                      "(largest Young's modulus over the smallest cell "
+                      "diameter), so that c g is a pressure in Pa.");
+    prm.leave_subsection();
+  }
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    obstacle_file    = dealii::Utilities::trim(prm.get("Obstacle file"));
+    length_unit_name = prm.get("Length unit");
+    length_unit      = length_unit_in_metres(length_unit_name, "Contact/Length unit");
+    inside           = prm.get("Side") == "inside";
+    labels = parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
+    active_set_constant = prm.get_double("Active set constant");
+    prm.leave_subsection();
+    if (!(active_set_constant > 0))
+      throw InputError("", "Contact/Active set constant", "expected a positive number");
+  }
+
+  void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
     MeshParameters::declare_parameters(prm);
@@ -395,6 +447,7 @@ namespace RestShape
     OutputParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
   }
 
   void
@@ -409,5 +462,6 @@ namespace RestShape
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);
+    contact.parse_parameters(prm);
   }
 } // namespace RestShape

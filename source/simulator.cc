@@ -26,7 +26,12 @@ namespace RestShape
     make_mesh();
     check_scene();
     forward = std::make_unique<ForwardProblem>(parameters, *mesh, *materials, timer, pcout);
-    forward->setup();
+    if (parameters.contact.enabled())
+      {
+        contact = std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+        forward->set_contact(contact.get());
+      }
+    setup_problems();
     check_scene();
     prepare_output();
 
@@ -36,7 +41,7 @@ namespace RestShape
         if (cycle > 0)
           {
             refine();
-            forward->setup();
+            setup_problems();
           }
         pcout << "Cycle " << cycle << ": " << mesh->triangulation().n_global_active_cells()
               << " cells, " << forward->dof_handler().n_dofs() << " DoFs" << std::endl;
@@ -45,6 +50,20 @@ namespace RestShape
       }
     write_summary(stats);
     timer.print_summary();
+  }
+
+  void
+  Simulator::setup_problems()
+  {
+    forward->setup();
+    if (contact)
+      {
+        contact->setup();
+        contact->gap_tolerance = parameters.solver.newton_tolerance * mesh->diameter();
+        pcout << "Contact: " << parameters.contact.obstacle_file << ", "
+              << contact->n_candidates() << " candidate nodes, allowed side: "
+              << (parameters.contact.inside ? "inside" : "outside") << std::endl;
+      }
   }
 
   void
@@ -92,7 +111,7 @@ namespace RestShape
                        "Adaptive refinement/Strategy",
                        "adaptive refinement is not available yet; use Strategy = global");
 
-    if (!forward)
+    if (!forward || contact)
       return;
     // Without contact, every displacement component must be fixed
     // somewhere, or rigid-body motion makes the problem singular.
@@ -158,6 +177,8 @@ namespace RestShape
 
     const Tensor<1, 3> external = forward->total_external_force(forward->load());
     const Tensor<1, 3> reaction = forward->support_reaction();
+    const Tensor<1, 3> contact_force =
+      contact ? contact->total_force(forward->raw_residual()) : Tensor<1, 3>();
 
     summary.set("converged", true);
     summary.set("cell_type", std::string(mesh->is_simplex() ? "tetrahedra" : "hexahedra"));
@@ -176,7 +197,19 @@ namespace RestShape
     summary.set("mean_displacement_mm", mean_u);
     summary.set("external_force_N", external);
     summary.set("support_reaction_N", reaction);
-    summary.set("force_balance_relative", (external + reaction).norm() / std::max(external.norm(), 1e-300));
+    summary.set("force_balance_relative",
+                (external + reaction + contact_force).norm() / std::max(external.norm(), 1e-300));
+    if (contact)
+      {
+        summary.set("active_contact_nodes", long(contact->n_active()));
+        summary.set("contact_force_N", contact_force);
+        summary.set("active_set_iterations", long(stats.active_set_changes + 1));
+        summary.set("max_penetration_mm", contact->max_penetration(true) * 1e3 + 0.);
+        summary.set("nodes_outside", long(contact->n_outside()));
+        const auto [p_min, p_max] = contact->pressure_range(forward->raw_residual());
+        summary.set("contact_pressure_min_Pa", p_min);
+        summary.set("contact_pressure_max_Pa", p_max);
+      }
 
     convergence_table.add_value("cycle", cycle);
     convergence_table.add_value("cells", mesh->triangulation().n_global_active_cells());
@@ -225,11 +258,31 @@ namespace RestShape
       }
 
     pcout << "  Displacement: max " << max_u << " mm, mean " << mean_u << " mm; force balance "
-          << (external + reaction).norm() << " N of " << external.norm() << " N" << std::endl;
+          << (external + reaction + contact_force).norm() << " N of " << external.norm() << " N"
+          << std::endl;
+    if (contact)
+      pcout << "  Contact: " << contact->n_active() << " active nodes, force " << contact_force
+            << " N, largest penetration " << contact->max_penetration(true) * 1e3 << " mm"
+            << std::endl;
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope scope(timer, "Output");
-        output->write_fields(*forward, cycle, cycle);
+        std::vector<NodalField> fields;
+        VectorType              contact_fields;
+        if (contact)
+          {
+            contact_fields.reinit(forward->locally_owned_dofs(),
+                                  forward->locally_relevant_dofs(),
+                                  comm);
+            contact_fields = contact->nodal_fields(forward->raw_residual(),
+                                                   1. / parameters.mesh.length_unit);
+            fields.push_back({&contact_fields,
+                              {"contact_active",
+                               "contact_gap_" + parameters.mesh.length_unit_name,
+                               "contact_pressure_Pa"},
+                              1.});
+          }
+        output->write_fields(*forward, cycle, cycle, fields);
       }
   }
 

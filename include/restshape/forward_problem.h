@@ -23,6 +23,8 @@
 
 namespace RestShape
 {
+  class ContactProblem;
+
   /**
    * What loads the body: a body acceleration (gravity plus any extra field,
    * m/s^2) acting on the mass of the mesh (target) geometry, and the surface
@@ -70,6 +72,11 @@ namespace RestShape
     void
     setup();
 
+    /// Optional contact (owned by the caller; nullptr: none). Its setup()
+    /// must follow setup().
+    void
+    set_contact(ContactProblem *contact);
+
     /**
      * Move the equilibrium from the current state (an equilibrium of the
      * current load and rest shape, e.g. the unloaded state after setup())
@@ -115,6 +122,8 @@ namespace RestShape
     mapping() const;
     const dealii::FESystem<3> &
     fe() const;
+    const dealii::Quadrature<2> &
+    face_quadrature() const;
     const dealii::AffineConstraints<double> &
     base_constraints() const;
     const dealii::IndexSet &
@@ -215,7 +224,7 @@ namespace RestShape
     std::unique_ptr<dealii::Mapping<3>> mapping_;
     dealii::FESystem<3>                 fe_;
     dealii::Quadrature<3>               cell_quadrature;
-    dealii::Quadrature<2>               face_quadrature;
+    dealii::Quadrature<2>               face_quadrature_;
     dealii::DoFHandler<3>               dof_handler_;
     dealii::IndexSet                    owned_dofs, relevant_dofs;
     dealii::AffineConstraints<double>   constraints_hanging;
@@ -233,6 +242,7 @@ namespace RestShape
     LoadState  current_load;
 
     std::unique_ptr<LinearSolver> linear_solver;
+    ContactProblem *              contact = nullptr;
   };
 } // namespace RestShape
 

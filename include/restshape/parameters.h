@@ -149,6 +149,27 @@ namespace RestShape
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  struct ContactParameters
+  {
+    std::string     obstacle_file; // empty: no contact
+    std::string     length_unit_name;
+    double          length_unit;
+    bool            inside; // allowed region: inside the closed surface
+    std::set<Label> labels; // empty: all
+    double          active_set_constant;
+
+    bool
+    enabled() const
+    {
+      return !obstacle_file.empty();
+    }
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /// All subsections together: what a scene file describes.
   struct Parameters
   {
@@ -161,6 +182,7 @@ namespace RestShape
     OutputParameters         output;
     VerificationParameters   verification;
     RefinementParameters     refinement;
+    ContactParameters        contact;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

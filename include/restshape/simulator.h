@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <restshape/contact.h>
 #include <restshape/forward_problem.h>
 #include <restshape/material.h>
 #include <restshape/mesh.h>
@@ -54,6 +55,8 @@ namespace RestShape
     void
     refine();
     void
+    setup_problems();
+    void
     write_summary(const SolveStatistics &stats);
 
     const Parameters &              parameters;
@@ -67,6 +70,7 @@ namespace RestShape
     std::unique_ptr<LabelledMesh>      mesh;
     std::unique_ptr<MaterialTable>     materials;
     std::unique_ptr<ForwardProblem>    forward;
+    std::unique_ptr<ContactProblem>    contact;
     std::unique_ptr<OutputWriter>      output;
     std::unique_ptr<ExactDisplacement> exact;
 

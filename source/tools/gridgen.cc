@@ -11,10 +11,17 @@
 // convert_hypercube_to_simplex_mesh: a mesh with the symmetries of the box).
 // Every cell gets label L (default 1), then each --slab relabels the cells
 // whose centroid satisfies MIN <= coordinate AXIS <= MAX.
+//
+//   restshape-gridgen --hemisphere R --refinements N [--grading G]
+//       [--cell-type ...] --out FILE.msh
+//
+// A hemisphere, dome down with its pole at the origin (see
+// make_hemisphere()): label 2 for the cells on the flat top, 1 below.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <restshape/generated_meshes.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
 
@@ -56,6 +63,8 @@ main(int argc, char **argv)
       Label                       label = 1;
       std::vector<Slab>           slabs;
       std::string                 out;
+      double                      hemisphere = 0, grading = 1;
+      unsigned int                refinements = 0;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -91,11 +100,32 @@ main(int argc, char **argv)
             }
           else if (arg == "--out")
             out = value;
+          else if (arg == "--hemisphere")
+            hemisphere = std::stod(value);
+          else if (arg == "--refinements")
+            refinements = std::stoi(value);
+          else if (arg == "--grading")
+            grading = std::stod(value);
+
           else
             throw InputError("", arg, "unknown option");
         }
       if (out.empty())
         throw InputError("", "--out", "no output file given");
+
+      if (hemisphere > 0)
+        {
+          Triangulation<3> hexes, tria;
+          make_hemisphere(hexes, hemisphere, refinements, grading);
+          if (tets || tets24)
+            GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+          else
+            tria.copy_triangulation(hexes);
+          write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
+          std::cout << out << ": " << tria.n_active_cells() << " cells, "
+                    << tria.n_used_vertices() << " vertices" << std::endl;
+          return 0;
+        }
 
       MeshDescription mesh;
       const auto      vertex_index = [&](unsigned int i, unsigned int j, unsigned int k) {

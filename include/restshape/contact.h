@@ -1,0 +1,175 @@
+// Frictionless one-sided contact with a rigid triangulated obstacle, by a
+// primal-dual active set (semismooth Newton) inside the Newton loop.
+#ifndef restshape_contact_h
+#define restshape_contact_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <restshape/forward_problem.h>
+#include <restshape/obstacle.h>
+#include <restshape/parameters.h>
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  /**
+   * Node-to-surface contact. Candidates are the boundary nodes of the
+   * contact labels. At every Newton iterate, each candidate i has a signed
+   * gap g_i (m, > 0 on the allowed side) and the gap's gradient n_i. A node
+   * is active when it is eligible and
+   *
+   *     p_i - c (g_i - g_tol) > 0,      p_i = lambda_i / A_i,
+   *
+   * with lambda_i = -r_i . n_i the obstacle's force on an active node (from
+   * the raw residual r, N; zero for inactive nodes), A_i the node's lumped
+   * (HRZ) area, c = (Active set constant) E_max / h_min. Active nodes get the
+   * linearised constraint n_i . delta_i = -g_i (an AffineConstraints line on
+   * their dominant free component, general normals allowed).
+   *
+   * One-sided rule (Morin et al. 2015): a node is eligible once it has been
+   * on the allowed side (g >= -g_tol) during the solve, or once a Newton step
+   * carried it through the allowed region and out again; a node that starts a
+   * solve on the wrong side is free until then.
+   */
+  class ContactProblem
+  {
+  public:
+    ContactProblem(const ContactParameters &parameters,
+                   const ForwardProblem &   forward,
+                   dealii::TimerOutput &    timer);
+    ~ContactProblem();
+
+    /// Find candidate nodes and their areas (after ForwardProblem::setup()).
+    void
+    setup();
+
+    /// A new solve starts from displacement @p d (ghosted).
+    void
+    begin_solve(const VectorType &d);
+
+    /// Remember the contact state of an equilibrium / go back to it (with
+    /// the displacement, when a load increment fails).
+    void
+    save_state();
+    void
+    restore_state();
+
+    /**
+     * Gaps at @p d; eligibility; new active set from the contact forces in
+     * @p raw_residual (ignored if @p first_iteration: no node is released).
+     * Returns whether the active set changed.
+     */
+    bool
+    update_active_set(const VectorType &d,
+                      const VectorType &raw_residual,
+                      const bool        first_iteration);
+
+    /**
+     * The largest step length alpha <= 1 along the Newton update @p delta
+     * (owned vector) for which no eligible inactive node goes further than
+     * a quarter of the smallest cell beyond the obstacle (linearised gap
+     * g + alpha n . delta): a step cannot carry the body through the
+     * obstacle; the nodes that reach it are activated at the next iterate.
+     */
+    double
+    max_step(const VectorType &delta) const;
+
+    /// Add the constraints of the active nodes (not touching @p base's).
+    void
+    add_constraints(dealii::AffineConstraints<double> &      constraints,
+                    const dealii::AffineConstraints<double> &base) const;
+
+    /// No eligible node beyond the obstacle and every active node on it
+    /// (within g_tol) at the state of the last update.
+    bool
+    is_satisfied() const;
+
+    /// ", contact N active (+a -r)" for the Newton progress line.
+    std::string
+    progress_text() const;
+
+    // --- results at the state of the last update ------------------------
+    unsigned int
+    n_active() const;
+    /// Sum of the obstacle's forces on the body (N).
+    dealii::Tensor<1, 3>
+    total_force(const VectorType &raw_residual) const;
+    /// Largest penetration (-gap) of an eligible node (m), and of any node.
+    double
+    max_penetration(const bool eligible_only) const;
+    /**
+     * Per node: x slot 1 for active nodes, y slot the gap (in metres times
+     * @p length_scale), z slot the contact pressure (Pa).
+     */
+    VectorType
+    nodal_fields(const VectorType &raw_residual, const double length_scale) const;
+    /// Smallest and largest contact pressure over active nodes (Pa).
+    std::pair<double, double>
+    pressure_range(const VectorType &raw_residual) const;
+    /// Largest distance of an active node from the axis through @p point
+    /// along @p direction (m): the radius of the contact zone.
+    double
+    contact_radius(const dealii::Point<3> &point, const dealii::Tensor<1, 3> &direction) const;
+    unsigned int
+    n_candidates() const;
+    /// Candidates beyond the obstacle (gap < -g_tol), eligible or not.
+    unsigned int
+    n_outside() const;
+
+    /// Tolerance on gaps (m).
+    double gap_tolerance;
+
+  private:
+    struct Candidate
+    {
+      Node                 node;
+      std::array<bool, 3>  fixed;
+      bool                 owned;
+      double               area_lumped = 0; // HRZ over all its boundary faces, m^2
+      bool                 eligible        = false;
+      bool                 active          = false;
+      double               gap             = 0;
+      dealii::Tensor<1, 3> normal;
+      dealii::Point<3>     previous_position;
+    };
+
+    dealii::Point<3>
+    position(const Candidate &c, const VectorType &d) const;
+    double
+    contact_force(const Candidate &c, const VectorType &raw_residual) const;
+    void
+    share_flags();
+    /// Contact pressure of every candidate (Pa; 0 where inactive).
+    std::vector<double>
+    pressures(const VectorType &raw_residual) const;
+
+    const ContactParameters         parameters;
+    const ForwardProblem &          forward;
+    dealii::TimerOutput &           timer;
+    std::unique_ptr<Obstacle>       obstacle;
+    /// A boundary face of a contact label: its candidate nodes with, for
+    /// each, the HRZ-lumped area and int phi dA (m^2).
+    struct Face
+    {
+      std::vector<unsigned int> nodes;
+      std::vector<double>       lumped, integral;
+      dealii::Tensor<1, 3>      normal; // outward, mesh geometry
+    };
+
+    std::vector<Candidate>          candidates;
+    std::vector<Face>               faces;
+    double                          c_scaled = 0;
+    std::set<std::size_t>           history;
+    std::vector<std::pair<bool, bool>> saved; // active, eligible
+    double                          h_min = 0;
+    bool                            releases_frozen = false;
+    unsigned int                    n_added = 0, n_released = 0;
+  };
+} // namespace RestShape
+
+#endif

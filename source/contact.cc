@@ -1,0 +1,478 @@
+#include <deal.II/fe/fe_values.h>
+
+#include <restshape/contact.h>
+#include <restshape/input_error.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  ContactProblem::ContactProblem(const ContactParameters &parameters,
+                                 const ForwardProblem &   forward,
+                                 TimerOutput &            timer)
+    : gap_tolerance(1e-10 * forward.mesh().diameter())
+    , parameters(parameters)
+    , forward(forward)
+    , timer(timer)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    obstacle = std::make_unique<Obstacle>(parameters.obstacle_file,
+                                          parameters.length_unit,
+                                          parameters.inside);
+  }
+
+  ContactProblem::~ContactProblem() = default;
+
+  void
+  ContactProblem::setup()
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    const auto &fe = forward.fe();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const auto &nodes = forward.relevant_nodes();
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      node_of_dof[nodes[n].dofs[0]] = n;
+
+    candidates.clear();
+    faces.clear();
+    std::map<types::global_dof_index, unsigned int> candidate_of_dof;
+    FEFaceValues<3> fv(forward.mapping(), fe, forward.face_quadrature(),
+                       update_values | update_JxW_values | update_normal_vectors);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const auto &constraints = forward.base_constraints();
+
+    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      {
+        if (cell->is_artificial() ||
+            (!parameters.labels.empty() && !parameters.labels.count(cell->material_id())))
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            cell->get_dof_indices(dofs);
+            fv.reinit(cell, f);
+            double              face_area = 0, mass_sum = 0;
+            Face                face;
+            std::vector<double> mass;
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                face_area += fv.JxW(q);
+                face.normal += fv.normal_vector(q) * fv.JxW(q);
+              }
+            face.normal /= face.normal.norm();
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                if (fe.system_to_component_index(i).first != 0)
+                  continue;
+                // A shape function without support on the face vanishes
+                // there (FE_SimplexP::has_support_on_face() answers true for
+                // every shape function in deal.II 9.4).
+                double m = 0, a = 0;
+                for (const unsigned int q : fv.quadrature_point_indices())
+                  {
+                    m += fv.shape_value(i, q) * fv.shape_value(i, q) * fv.JxW(q);
+                    a += fv.shape_value(i, q) * fv.JxW(q);
+                  }
+                if (m <= 1e-12 * face_area)
+                  continue;
+                const Node &node = nodes[node_of_dof.at(dofs[i])];
+                // Fully fixed nodes, and hanging nodes (their parents carry
+                // the contact), are not candidates.
+                std::array<bool, 3> fixed;
+                bool                hanging = false;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    fixed[c] = forward.is_fixed(node.dofs[c]);
+                    hanging |= constraints.is_constrained(node.dofs[c]) && !fixed[c];
+                  }
+                if (hanging || (fixed[0] && fixed[1] && fixed[2]))
+                  continue;
+                auto it = candidate_of_dof.find(dofs[i]);
+                if (it == candidate_of_dof.end())
+                  {
+                    Candidate c;
+                    c.node  = node;
+                    c.fixed = fixed;
+                    c.owned = forward.locally_owned_dofs().is_element(node.dofs[0]);
+                    it      = candidate_of_dof.emplace(dofs[i], candidates.size()).first;
+                    candidates.push_back(c);
+                  }
+                face.nodes.push_back(it->second);
+                mass.push_back(m);
+                face.integral.push_back(a);
+                mass_sum += m;
+              }
+            // HRZ lumping: the diagonal of the face mass matrix, scaled to
+            // the face area (positive for every element type).
+            for (unsigned int k = 0; k < face.nodes.size(); ++k)
+              {
+                face.lumped.push_back(mass[k] * face_area / mass_sum);
+                candidates[face.nodes[k]].area_lumped += face.lumped.back();
+              }
+            if (!face.nodes.empty())
+              faces.push_back(face);
+          }
+      }
+
+    h_min    = forward.mesh().minimum_cell_diameter();
+    c_scaled = parameters.active_set_constant * forward.materials().max_youngs_modulus() / h_min;
+    history.clear();
+    saved.clear();
+  }
+
+  Point<3>
+  ContactProblem::position(const Candidate &c, const VectorType &d) const
+  {
+    Point<3> x = c.node.position;
+    for (unsigned int k = 0; k < 3; ++k)
+      x[k] += d[c.node.dofs[k]];
+    return x;
+  }
+
+  double
+  ContactProblem::contact_force(const Candidate &c, const VectorType &raw_residual) const
+  {
+    // At equilibrium f_ext - f_int + lambda n = 0 at the node.
+    double lambda = 0;
+    for (unsigned int k = 0; k < 3; ++k)
+      lambda -= raw_residual[c.node.dofs[k]] * c.normal[k];
+    return lambda;
+  }
+
+  void
+  ContactProblem::share_flags()
+  {
+    // The owner of a node decides; ghost copies follow, so that every
+    // process builds the same constraints.
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    VectorType flags(forward.locally_owned_dofs(), comm);
+    for (const Candidate &c : candidates)
+      if (c.owned)
+        flags[c.node.dofs[0]] = (c.active ? 1 : 0) + (c.eligible ? 2 : 0);
+    flags.compress(VectorOperation::insert);
+    VectorType ghosted(forward.locally_owned_dofs(), forward.locally_relevant_dofs(), comm);
+    ghosted = flags;
+    for (Candidate &c : candidates)
+      if (!c.owned)
+        {
+          const int f = static_cast<int>(std::lround(ghosted[c.node.dofs[0]]));
+          c.active    = (f & 1) != 0;
+          c.eligible  = (f & 2) != 0;
+        }
+  }
+
+  void
+  ContactProblem::begin_solve(const VectorType &d)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    history.clear();
+    releases_frozen = false;
+    n_added = n_released = 0;
+    for (Candidate &c : candidates)
+      {
+        const Point<3> x  = position(c, d);
+        const Gap      g  = obstacle->gap(x);
+        c.gap             = g.gap;
+        c.normal          = g.normal;
+        c.previous_position = x;
+        // Warm start: the active set of the last solve, for nodes that are
+        // on the allowed side and within a cell size of the obstacle now.
+        c.eligible = g.gap >= -gap_tolerance;
+        c.active   = c.active && c.eligible && g.gap < h_min;
+      }
+    share_flags();
+  }
+
+  void
+  ContactProblem::save_state()
+  {
+    saved.resize(candidates.size());
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      saved[i] = {candidates[i].active, candidates[i].eligible};
+  }
+
+  void
+  ContactProblem::restore_state()
+  {
+    if (saved.size() != candidates.size())
+      return;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      std::tie(candidates[i].active, candidates[i].eligible) = saved[i];
+  }
+
+  bool
+  ContactProblem::update_active_set(const VectorType &d,
+                                    const VectorType &raw_residual,
+                                    const bool        first_iteration)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    n_added = n_released = 0;
+    std::size_t hash     = 0;
+    for (Candidate &c : candidates)
+      {
+        const Point<3> x = position(c, d);
+        const Gap      g = obstacle->gap(x);
+        c.gap            = g.gap;
+        c.normal         = g.normal;
+        if (c.owned && !c.eligible &&
+            (g.gap >= -gap_tolerance || obstacle->n_crossings(c.previous_position, x) >= 2))
+          c.eligible = true;
+        c.previous_position = x;
+        if (!c.owned)
+          continue;
+
+        bool now_active = false;
+        if (c.eligible)
+          {
+            // Pressure of an active node; no release on the first iteration
+            // (the residual is that of another state).
+            const double p = !c.active ? 0. :
+                             first_iteration ? std::numeric_limits<double>::max() :
+                                               contact_force(c, raw_residual) / c.area_lumped;
+            now_active = p - c_scaled * (c.gap - gap_tolerance) > 0;
+            if (releases_frozen && c.active)
+              now_active = true;
+          }
+        n_added += (now_active && !c.active);
+        n_released += (!now_active && c.active);
+        c.active = now_active;
+        if (now_active)
+          hash += std::hash<types::global_dof_index>()(c.node.dofs[0]) * 2654435761u;
+      }
+    share_flags();
+    n_added    = Utilities::MPI::sum(n_added, comm);
+    n_released = Utilities::MPI::sum(n_released, comm);
+    hash       = Utilities::MPI::sum(hash, comm);
+    const bool changed = n_added + n_released > 0;
+    // Cycling: an active set seen before in this solve comes back. Then
+    // nodes may still be added but no longer released, which ends the cycle.
+    if (changed && history.count(hash) && !releases_frozen)
+      releases_frozen = true;
+    history.insert(hash);
+    return changed;
+  }
+
+  double
+  ContactProblem::max_step(const VectorType &delta) const
+  {
+    double alpha = 1;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.eligible && !c.active)
+        {
+          double rate = 0;
+          for (unsigned int k = 0; k < 3; ++k)
+            rate += c.normal[k] * delta[c.node.dofs[k]];
+          if (rate < 0)
+            alpha = std::min(alpha, std::max(c.gap + 0.25 * h_min, 0.) / -rate);
+        }
+    return Utilities::MPI::min(alpha, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  void
+  ContactProblem::add_constraints(AffineConstraints<double> &      constraints,
+                                  const AffineConstraints<double> &base) const
+  {
+    for (const Candidate &c : candidates)
+      {
+        if (!c.active)
+          continue;
+        const auto &dofs = c.node.dofs;
+        std::array<bool, 3> free;
+        int                 k = -1;
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            free[j] = !c.fixed[j] && !base.is_constrained(dofs[j]);
+            if (free[j] && (k < 0 || std::abs(c.normal[j]) > std::abs(c.normal[k])))
+              k = j;
+          }
+        // A node that can only move (almost) tangentially cannot be pushed
+        // back by its free components.
+        if (k < 0 || std::abs(c.normal[k]) < 0.2)
+          continue;
+        // n . delta = -g, solved for the dominant component.
+        constraints.add_line(dofs[k]);
+        for (unsigned int j = 0; j < 3; ++j)
+          if (j != unsigned(k) && free[j])
+            constraints.add_entry(dofs[k], dofs[j], -c.normal[j] / c.normal[k]);
+        constraints.set_inhomogeneity(dofs[k], -c.gap / c.normal[k]);
+      }
+  }
+
+  bool
+  ContactProblem::is_satisfied() const
+  {
+    bool ok = true;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.eligible)
+        ok = ok && c.gap >= -gap_tolerance && (!c.active || std::abs(c.gap) <= gap_tolerance);
+    return Utilities::MPI::min(ok ? 1 : 0,
+                               forward.dof_handler().get_triangulation().get_communicator()) == 1;
+  }
+
+  std::string
+  ContactProblem::progress_text() const
+  {
+    return ", contact " + std::to_string(n_active()) + " active (+" + std::to_string(n_added) +
+           " -" + std::to_string(n_released) + ")" + (releases_frozen ? " [cycling: releases frozen]" : "");
+  }
+
+  unsigned int
+  ContactProblem::n_active() const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += (c.owned && c.active);
+    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  unsigned int
+  ContactProblem::n_candidates() const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += c.owned;
+    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  unsigned int
+  ContactProblem::n_outside() const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += (c.owned && c.gap < -gap_tolerance);
+    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  Tensor<1, 3>
+  ContactProblem::total_force(const VectorType &raw_residual) const
+  {
+    Tensor<1, 3> force;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        force += contact_force(c, raw_residual) * c.normal;
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    for (unsigned int k = 0; k < 3; ++k)
+      force[k] = Utilities::MPI::sum(force[k], comm);
+    return force;
+  }
+
+  double
+  ContactProblem::max_penetration(const bool eligible_only) const
+  {
+    double p = -std::numeric_limits<double>::max();
+    for (const Candidate &c : candidates)
+      if (c.owned && (c.eligible || !eligible_only))
+        p = std::max(p, -c.gap);
+    return Utilities::MPI::max(p, forward.dof_handler().get_triangulation().get_communicator()) + 0.;
+  }
+
+  std::vector<double>
+  ContactProblem::pressures(const VectorType &raw_residual) const
+  {
+    // The pressure of an active node is its contact force over int phi dA
+    // on the faces that face the obstacle (outward normal against the
+    // obstacle's normal at the node: n_f . n < -1/2), which makes a uniform
+    // pressure exact and leaves out faces at an angle to the obstacle (the
+    // sides of a block on a floor). Where int phi dA vanishes (corners of
+    // quadratic triangles carry no force under a smooth pressure) the
+    // pressure is the mean of the other nodes of those faces; an active node
+    // without such a face uses its lumped area.
+    const unsigned int  n = candidates.size();
+    std::vector<double> lumped(n, 0.), integral(n, 0.), pressure(n, 0.);
+    std::vector<bool>   in_face(n, false);
+    for (const Face &face : faces)
+      for (unsigned int k = 0; k < face.nodes.size(); ++k)
+        {
+          const Candidate &c = candidates[face.nodes[k]];
+          if (!c.active || face.normal * c.normal > -0.5)
+            continue;
+          lumped[face.nodes[k]] += face.lumped[k];
+          integral[face.nodes[k]] += face.integral[k];
+          in_face[face.nodes[k]] = true;
+        }
+    const auto direct = [&](const unsigned int i) {
+      return in_face[i] && integral[i] >= 0.1 * lumped[i];
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          const double force = contact_force(candidates[i], raw_residual);
+          if (direct(i))
+            pressure[i] = force / integral[i];
+          else if (!in_face[i])
+            pressure[i] = force / candidates[i].area_lumped;
+        }
+    std::vector<double>       sum(n, 0.);
+    std::vector<unsigned int> count(n, 0);
+    for (const Face &face : faces)
+      for (const unsigned int i : face.nodes)
+        if (in_face[i] && !direct(i) && face.normal * candidates[i].normal <= -0.5)
+          for (const unsigned int j : face.nodes)
+            if (direct(j))
+              {
+                sum[i] += pressure[j];
+                ++count[i];
+              }
+    for (unsigned int i = 0; i < n; ++i)
+      if (candidates[i].owned && candidates[i].active && count[i] > 0)
+        pressure[i] = sum[i] / count[i];
+    return pressure;
+  }
+
+  std::pair<double, double>
+  ContactProblem::pressure_range(const VectorType &raw_residual) const
+  {
+    const std::vector<double> pressure = pressures(raw_residual);
+    double low = std::numeric_limits<double>::max(), high = -low;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          low  = std::min(low, pressure[i]);
+          high = std::max(high, pressure[i]);
+        }
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    low  = Utilities::MPI::min(low, comm);
+    high = Utilities::MPI::max(high, comm);
+    return high < low ? std::make_pair(0., 0.) : std::make_pair(low, high);
+  }
+
+  double
+  ContactProblem::contact_radius(const Point<3> &point, const Tensor<1, 3> &direction) const
+  {
+    const Tensor<1, 3> axis   = direction / direction.norm();
+    double             radius = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const Tensor<1, 3> r = c.node.position - point;
+          radius               = std::max(radius, (r - (r * axis) * axis).norm());
+        }
+    return Utilities::MPI::max(radius, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  VectorType
+  ContactProblem::nodal_fields(const VectorType &raw_residual, const double length_scale) const
+  {
+    const std::vector<double> pressure = pressures(raw_residual);
+    VectorType fields = forward.zero_vector();
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned)
+        {
+          const auto &dofs = candidates[i].node.dofs;
+          fields[dofs[0]]  = candidates[i].active ? 1 : 0;
+          fields[dofs[1]]  = candidates[i].gap * length_scale;
+          fields[dofs[2]]  = pressure[i];
+        }
+    fields.compress(VectorOperation::insert);
+    return fields;
+  }
+} // namespace RestShape
