@@ -123,7 +123,6 @@ namespace RestShape
     h_min    = forward.mesh().minimum_cell_diameter();
     c_scaled = parameters.active_set_constant * forward.materials().max_youngs_modulus() / h_min;
     history.clear();
-    saved.clear();
   }
 
   Point<3>
@@ -191,21 +190,29 @@ namespace RestShape
     share_flags();
   }
 
-  void
-  ContactProblem::save_state()
+  ContactProblem::State
+  ContactProblem::state() const
   {
-    saved.resize(candidates.size());
+    State s(candidates.size());
     for (unsigned int i = 0; i < candidates.size(); ++i)
-      saved[i] = {candidates[i].active, candidates[i].eligible};
+      s[i] = {candidates[i].active, candidates[i].eligible};
+    return s;
   }
 
   void
-  ContactProblem::restore_state()
+  ContactProblem::set_state(const State &s)
   {
-    if (saved.size() != candidates.size())
+    if (s.size() != candidates.size())
       return;
     for (unsigned int i = 0; i < candidates.size(); ++i)
-      std::tie(candidates[i].active, candidates[i].eligible) = saved[i];
+      std::tie(candidates[i].active, candidates[i].eligible) = s[i];
+  }
+
+  void
+  ContactProblem::reset()
+  {
+    for (Candidate &c : candidates)
+      c.active = false;
   }
 
   bool

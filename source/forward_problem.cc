@@ -141,6 +141,8 @@ namespace RestShape
   ForwardProblem::setup()
   {
     TimerOutput::Scope scope(timer, "Setup");
+    // The solver's factorisation refers to the old matrix: release it first.
+    linear_solver.reset();
     dof_handler_.reinit(labelled_mesh.triangulation());
     dof_handler_.distribute_dofs(fe_);
     owned_dofs = dof_handler_.locally_owned_dofs();
@@ -605,8 +607,9 @@ namespace RestShape
     VectorType       d_converged = d;
     double           s_done = 0, ds = 1;
     unsigned int     halvings = 0;
+    ContactProblem::State contact_converged;
     if (contact != nullptr)
-      contact->save_state();
+      contact_converged = contact->state();
 
     while (s_done < 1)
       {
@@ -627,7 +630,7 @@ namespace RestShape
             s_done      = s;
             d_converged = d;
             if (contact != nullptr)
-              contact->save_state();
+              contact_converged = contact->state();
             ++stats.load_steps;
             ds = std::min(2 * ds, 1.);
             continue;
@@ -636,7 +639,7 @@ namespace RestShape
         d       = d_converged;
         d_ghost = d;
         if (contact != nullptr)
-          contact->restore_state();
+          contact->set_state(contact_converged);
         if (++halvings > parameters.solver.max_load_step_halvings)
           {
             current_load.acceleration =
@@ -712,6 +715,33 @@ namespace RestShape
     return v;
   }
 
+  VectorType
+  ForwardProblem::interpolate_vertex_field(const std::vector<Tensor<1, 3>> &values) const
+  {
+    VectorType result = zero_vector();
+    const auto linear = scalar_element(labelled_mesh.is_simplex(), 1);
+    const auto &support = fe_.base_element(0).get_unit_support_points();
+    std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              if (!owned_dofs.is_element(dofs[i]))
+                continue;
+              const auto [component, base] = fe_.system_to_component_index(i);
+              double     value             = 0;
+              for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+                value += linear->shape_value(v, support[base]) *
+                         values[cell->vertex_index(v)][component];
+              result[dofs[i]] = value;
+            }
+        }
+    result.compress(VectorOperation::insert);
+    return result;
+  }
+
   bool
   ForwardProblem::rest_shape_is_valid(const VectorType &rest,
                                       unsigned int &    n_bad) const
@@ -736,6 +766,22 @@ namespace RestShape
         }
     n_bad = Utilities::MPI::sum(n_bad, comm);
     return n_bad == 0;
+  }
+
+  std::pair<double, double>
+  ForwardProblem::nodal_norms(const VectorType &v) const
+  {
+    double sum = 0, max = 0;
+    for (const Node &node : owned_nodes_)
+      {
+        Tensor<1, 3> value;
+        for (unsigned int c = 0; c < 3; ++c)
+          value[c] = v[node.dofs[c]];
+        sum += value.norm();
+        max = std::max(max, value.norm());
+      }
+    const double   n    = Utilities::MPI::sum(double(owned_nodes_.size()), comm);
+    return {Utilities::MPI::sum(sum, comm) / n, Utilities::MPI::max(max, comm)};
   }
 
   Vector<float>

@@ -492,6 +492,52 @@ namespace RestShape
       refine_global();
   }
 
+  std::vector<Point<3>>
+  LabelledMesh::read_rest_shape(const std::string &file) const
+  {
+    const std::string parameter = "Mesh/Rest shape file";
+    MeshDescription   rest;
+    try
+      {
+        rest = read_gmsh(file, parameters.length_unit);
+        check_mesh(rest, file);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(file, parameter, e.message);
+      }
+    if (rest.cells.size() != tria->n_global_active_cells())
+      throw InputError(file,
+                       parameter,
+                       "has " + std::to_string(rest.cells.size()) + " cells, the mesh " +
+                         std::to_string(tria->n_global_active_cells()) +
+                         "; expected the same cells in the same order (a rest_shape.msh "
+                         "written with the same Mesh settings)");
+    std::vector<Point<3>> positions(tria->n_vertices());
+    std::vector<bool>     set(tria->n_vertices(), false);
+    const double          tolerance = 1e-9 * bounding_diameter;
+    unsigned int          c         = 0;
+    for (const auto &cell : tria->active_cell_iterators())
+      {
+        const auto &rest_cell = rest.cells[c++];
+        if (rest_cell.vertices.size() != cell->n_vertices())
+          throw InputError(file, parameter, "the cell types differ from the mesh's");
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          {
+            const Point<3> &p = rest.vertices[rest_cell.vertices[v]];
+            const auto      i = cell->vertex_index(v);
+            if (set[i] && positions[i].distance(p) > tolerance)
+              throw InputError(file,
+                               parameter,
+                               "its cells are not connected like the mesh's (cell " +
+                                 std::to_string(c) + "); expected the same cells in the same order");
+            positions[i] = p;
+            set[i]       = true;
+          }
+      }
+    return positions;
+  }
+
   void
   LabelledMesh::create_triangulation()
   {

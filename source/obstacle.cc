@@ -33,6 +33,7 @@ namespace RestShape
   {
     Mesh                                         mesh;
     std::unique_ptr<Tree>                        tree;
+    double                                       size = 0; // bounding-box diagonal
     std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
   };
 
@@ -84,6 +85,10 @@ namespace RestShape
       }
 
     data->tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
+    const auto box = data->tree->bbox();
+    data->size     = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) +
+                           std::pow(box.ymax() - box.ymin(), 2) +
+                           std::pow(box.zmax() - box.zmin(), 2));
     data->tree->accelerate_distance_queries();
     data->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*data->tree);
   }
@@ -103,16 +108,49 @@ namespace RestShape
 
     Gap result;
     result.gap = allowed ? distance : -distance;
-    // The gradient of the signed distance; on (or very near) the surface,
-    // the normal of the closest face, oriented to the allowed side.
-    const auto n = PMP::compute_face_normal(face, data->mesh);
-    dealii::Tensor<1, 3> face_normal({n.x(), n.y(), n.z()});
-    if (inside)
-      face_normal *= -1;
-    if (distance > 1e-12 * std::max(1., std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2])))
-      result.normal = (allowed ? 1. : -1.) * to_point / distance;
-    else
-      result.normal = face_normal;
+    // The gradient of the signed distance. On (or very near) the surface,
+    // where the direction to the closest point is round-off noise, the
+    // pseudo-normal: the sum of the distinct normals of all faces as close
+    // as the closest one (one face inside a facet; two on an edge, three at
+    // a corner), which does not flip between faces with round-off.
+    const double tolerance = 1e-8 * data->size;
+    if (distance > tolerance)
+      {
+        result.normal = (allowed ? 1. : -1.) * to_point / distance;
+        return result;
+      }
+    std::vector<Primitive::Id> near;
+    const CGAL::Bbox_3 box(p.x() - 2 * tolerance, p.y() - 2 * tolerance, p.z() - 2 * tolerance,
+                           p.x() + 2 * tolerance, p.y() + 2 * tolerance, p.z() + 2 * tolerance);
+    data->tree->all_intersected_primitives(box, std::back_inserter(near));
+    if (near.empty())
+      near.push_back(face);
+    std::vector<dealii::Tensor<1, 3>> normals;
+    for (const auto f : near)
+      {
+        std::vector<CPoint> corners;
+        for (const auto v : CGAL::vertices_around_face(data->mesh.halfedge(f), data->mesh))
+          corners.push_back(data->mesh.point(v));
+        const Kernel::Triangle_3 t(corners[0], corners[1], corners[2]);
+        if (std::sqrt(CGAL::squared_distance(t, p)) > distance + tolerance)
+          continue;
+        const auto           n = PMP::compute_face_normal(f, data->mesh);
+        dealii::Tensor<1, 3> normal({n.x(), n.y(), n.z()});
+        bool                 known = false;
+        for (const auto &m : normals)
+          known = known || (m - normal).norm() < 1e-10;
+        if (!known)
+          normals.push_back(normal);
+      }
+    dealii::Tensor<1, 3> sum;
+    for (const auto &n : normals)
+      sum += n;
+    if (sum.norm() < 1e-12)
+      {
+        const auto n = PMP::compute_face_normal(face, data->mesh);
+        sum          = dealii::Tensor<1, 3>({n.x(), n.y(), n.z()});
+      }
+    result.normal = (inside ? -1. : 1.) * sum / sum.norm();
     return result;
   }
 

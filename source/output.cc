@@ -22,7 +22,34 @@ namespace RestShape
       else
         out << "null";
     }
+    /// |v| of a three-component field, evaluated where DataOut writes.
+    class Magnitude : public DataPostprocessorScalar<3>
+    {
+    public:
+      Magnitude(const std::string &name)
+        : DataPostprocessorScalar<3>(name, update_values)
+      {}
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
+          {
+            double s = 0;
+            for (unsigned int c = 0; c < 3; ++c)
+              s += inputs.solution_values[p][c] * inputs.solution_values[p][c];
+            computed[p](0) = std::sqrt(s);
+          }
+      }
+    };
   } // namespace
+
+  double
+  OutputWriter::length_scale() const
+  {
+    return 1. / length_unit;
+  }
 
   void
   Summary::set(const std::string &key, const Value &value)
@@ -119,7 +146,8 @@ namespace RestShape
                              const unsigned int             step,
                              const double                   time,
                              const std::vector<NodalField> &extra_nodal,
-                             const std::vector<CellField> & extra_cell)
+                             const std::vector<CellField> & extra_cell,
+                             const std::string &            name)
   {
     const DoFHandler<3> &dof_handler = problem.dof_handler();
     const IndexSet &     owned       = problem.locally_owned_dofs();
@@ -155,7 +183,8 @@ namespace RestShape
                              std::vector<std::string>(3, "displacement_" + length_unit_name),
                              DataOut<3>::type_dof_data,
                              as_vector);
-    std::vector<VectorType> scaled(extra_nodal.size());
+    std::vector<VectorType>                 scaled(extra_nodal.size());
+    std::vector<std::unique_ptr<Magnitude>> magnitudes;
     for (unsigned int f = 0; f < extra_nodal.size(); ++f)
       {
         scaled[f].reinit(owned, relevant, comm);
@@ -170,6 +199,11 @@ namespace RestShape
                                           extra_nodal[f].names,
                                  DataOut<3>::type_dof_data,
                                  vector ? as_vector : as_scalars);
+        if (!extra_nodal[f].magnitude_name.empty())
+          {
+            magnitudes.push_back(std::make_unique<Magnitude>(extra_nodal[f].magnitude_name));
+            data_out.add_data_vector(scaled[f], *magnitudes.back());
+          }
       }
 
     const unsigned int n_cells = problem.mesh().triangulation().n_active_cells();
@@ -197,7 +231,7 @@ namespace RestShape
 
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const std::string  base    = "solution-" + Utilities::int_to_string(step, 4);
+    const std::string  base    = name.empty() ? "solution-" + Utilities::int_to_string(step, 4) : name;
     std::vector<std::string> pieces;
     for (unsigned int r = 0; r < n_ranks; ++r)
       pieces.push_back(n_ranks == 1 ? base + ".vtu" :
@@ -213,9 +247,13 @@ namespace RestShape
         });
       }
 
+    if (!name.empty())
+      return;
     for (auto it = pvd_records.begin(); it != pvd_records.end();)
       it = (it->second == record) ? pvd_records.erase(it) : it + 1;
     pvd_records.emplace_back(time, record);
+    for (auto it = visit_records.begin(); it != visit_records.end();)
+      it = (it->second == pieces) ? visit_records.erase(it) : it + 1;
     visit_records.emplace_back(time, pieces);
     write_text("solution.pvd", [&](std::ostream &out) {
       DataOutBase::write_pvd_record(out, pvd_records);

@@ -69,6 +69,15 @@ namespace RestShape
                       Patterns::Selection("mm|m"),
                       "Unit of the coordinates in the mesh file. Internally "
                       "everything is SI; outputs use this unit for lengths.");
+    prm.declare_entry("Rest shape file",
+                      "",
+                      Patterns::Anything(),
+                      "Optional: a gmsh file with the same cells and vertices "
+                      "as Mesh/File (e.g. the rest_shape.msh of an inverse "
+                      "run) whose vertex positions are the stress-free shape. "
+                      "The simulation then starts pre-stressed: the body "
+                      "rests in that shape and the loads bring it back to "
+                      "Mesh/File's geometry. Empty: Mesh/File is stress-free.");
     prm.declare_entry("Cell type",
                       "tetrahedra",
                       Patterns::Selection("tetrahedra|hexahedra"),
@@ -91,6 +100,7 @@ namespace RestShape
     file = prm.get("File");
     if (file.empty())
       throw InputError("", "Mesh/File", "no mesh file given");
+    rest_shape_file = dealii::Utilities::trim(prm.get("Rest shape file"));
     length_unit_name = prm.get("Length unit");
     length_unit = length_unit_in_metres(length_unit_name, "Mesh/Length unit");
     cell_type   = prm.get("Cell type") == "hexahedra" ? CellType::hexahedra :
@@ -343,6 +353,13 @@ namespace RestShape
                       "length unit, functions of the reference coordinates "
                       "x, y, z (same unit). When given, the L2 and H1 errors "
                       "are computed and written to convergence.csv.");
+    prm.declare_entry("Exact rest displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Optional, for the inverse problem: the exact X_rest - "
+                      "X_target as three muparser expressions of x, y, z "
+                      "(mesh length unit). When given, the errors of the "
+                      "computed rest shape are written to convergence.csv.");
     prm.leave_subsection();
   }
 
@@ -351,6 +368,7 @@ namespace RestShape
   {
     prm.enter_subsection("Verification");
     exact_displacement = dealii::Utilities::trim(prm.get("Exact displacement"));
+    exact_rest_displacement = dealii::Utilities::trim(prm.get("Exact rest displacement"));
     prm.leave_subsection();
   }
 
@@ -436,6 +454,97 @@ namespace RestShape
   }
 
   void
+  InverseParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Inverse problem");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Compute the rest shape: the stress-free shape whose "
+                      "equilibrium under the loads, supports and contact is "
+                      "the mesh geometry (the target, e.g. the segmented "
+                      "image). The iteration of Sellier 2011 / Morin et al. "
+                      "2015: X_rest <- X_rest + (X_target - X_equilibrium).");
+    prm.declare_entry("Error measure",
+                      "mean",
+                      Patterns::Selection("mean|max"),
+                      "Error of an iteration over all nodes: the mean (Morin "
+                      "et al.) or the max (Sellier) of |X_target - "
+                      "X_equilibrium|.");
+    prm.declare_entry("Tolerance",
+                      "0.01",
+                      Patterns::Double(0),
+                      "The iteration stops when the error measure is below "
+                      "this, in mm.");
+    prm.declare_entry("Maximum iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Rest-shape updates before the iteration stops "
+                      "unconverged.");
+    prm.declare_entry("Acceleration",
+                      "anderson",
+                      Patterns::Selection("none|anderson"),
+                      "none: the paper's update. anderson: Anderson "
+                      "acceleration of the same fixed point (safeguarded: a "
+                      "step that makes the error worse or would invert a "
+                      "cell falls back to the plain update).");
+    prm.declare_entry("Anderson depth",
+                      "5",
+                      Patterns::Integer(1, 20),
+                      "Number of previous iterates Anderson acceleration "
+                      "uses.");
+    prm.leave_subsection();
+  }
+
+  void
+  InverseParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Inverse problem");
+    enabled        = prm.get_bool("Enabled");
+    measure        = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
+    tolerance      = prm.get_double("Tolerance") * 1e-3;
+    max_iterations = prm.get_integer("Maximum iterations");
+    acceleration   = prm.get("Acceleration") == "none" ? Acceleration::none :
+                                                         Acceleration::anderson;
+    anderson_depth = prm.get_integer("Anderson depth");
+    prm.leave_subsection();
+    if (enabled && !(tolerance > 0))
+      throw InputError("", "Inverse problem/Tolerance", "expected a positive tolerance in mm");
+  }
+
+  void
+  PrestressComparisonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Prestress comparison");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "After the inverse problem, apply the same extra body "
+                      "force to (1) the pre-stressed model (its equilibrium "
+                      "under the scene's loads) and (2) the model that "
+                      "starts stress-free from the mesh geometry (no other "
+                      "load), as in Table 1 of Morin et al. 2015; write mean "
+                      "and max displacement of each to "
+                      "prestress_comparison.csv.");
+    prm.declare_entry("Extra body force",
+                      "0, 9.81, 0",
+                      Patterns::Anything(),
+                      "The extra acceleration field in m/s^2 ('x, y, z'), "
+                      "added to gravity for model (1).");
+    prm.leave_subsection();
+  }
+
+  void
+  PrestressComparisonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Prestress comparison");
+    enabled            = prm.get_bool("Enabled");
+    extra_acceleration = parse_vector(prm.get("Extra body force"),
+                                      "Prestress comparison/Extra body force");
+    prm.leave_subsection();
+  }
+
+  void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
     MeshParameters::declare_parameters(prm);
@@ -448,6 +557,8 @@ namespace RestShape
     VerificationParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
+    InverseParameters::declare_parameters(prm);
+    PrestressComparisonParameters::declare_parameters(prm);
   }
 
   void
@@ -463,5 +574,12 @@ namespace RestShape
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);
     contact.parse_parameters(prm);
+    inverse.parse_parameters(prm);
+    prestress_comparison.parse_parameters(prm);
+    if (prestress_comparison.enabled && !inverse.enabled)
+      throw InputError("",
+                       "Prestress comparison/Enabled",
+                       "the comparison needs the pre-stressed model: set "
+                       "Inverse problem/Enabled = true");
   }
 } // namespace RestShape

@@ -33,6 +33,7 @@ namespace RestShape
       }
     setup_problems();
     check_scene();
+    VectorType rest = initial_rest_shape();
     prepare_output();
 
     SolveStatistics stats;
@@ -40,30 +41,20 @@ namespace RestShape
       {
         if (cycle > 0)
           {
-            refine();
+            TimerOutput::Scope scope(timer, "Refinement");
+            mesh->refine_global();
             setup_problems();
+            rest = forward->zero_vector();
           }
         pcout << "Cycle " << cycle << ": " << mesh->triangulation().n_global_active_cells()
               << " cells, " << forward->dof_handler().n_dofs() << " DoFs" << std::endl;
-        stats = solve_forward();
+        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest) : solve_forward(rest);
         postprocess(cycle, stats);
       }
+    if (parameters.prestress_comparison.enabled)
+      compare_prestress();
     write_summary(stats);
     timer.print_summary();
-  }
-
-  void
-  Simulator::setup_problems()
-  {
-    forward->setup();
-    if (contact)
-      {
-        contact->setup();
-        contact->gap_tolerance = parameters.solver.newton_tolerance * mesh->diameter();
-        pcout << "Contact: " << parameters.contact.obstacle_file << ", "
-              << contact->n_candidates() << " candidate nodes, allowed side: "
-              << (parameters.contact.inside ? "inside" : "outside") << std::endl;
-      }
   }
 
   void
@@ -75,6 +66,11 @@ namespace RestShape
     if (!parameters.verification.exact_displacement.empty())
       exact = std::make_unique<ExactDisplacement>(parameters.verification.exact_displacement,
                                                   parameters.mesh.length_unit);
+    if (!parameters.verification.exact_rest_displacement.empty())
+      exact_rest = std::make_unique<ExactDisplacement>(
+        parameters.verification.exact_rest_displacement,
+        parameters.mesh.length_unit,
+        "Verification/Exact rest displacement");
 
     pcout << "Mesh " << parameters.mesh.file << ": "
           << mesh->triangulation().n_global_active_cells()
@@ -99,6 +95,8 @@ namespace RestShape
       check(f.label, "Boundary conditions/Fixed labels");
     for (const Label l : parameters.loads.pressure_labels)
       check(l, "Loads/Pressure labels");
+    for (const Label l : parameters.contact.labels)
+      check(l, "Contact/Contact labels");
     if (parameters.refinement.strategy == RefinementParameters::Strategy::adaptive &&
         mesh->is_simplex())
       throw InputError(prm_file,
@@ -110,6 +108,11 @@ namespace RestShape
       throw InputError(prm_file,
                        "Adaptive refinement/Strategy",
                        "adaptive refinement is not available yet; use Strategy = global");
+    if (!parameters.mesh.rest_shape_file.empty() && parameters.refinement.cycles > 0)
+      throw InputError(prm_file,
+                       "Mesh/Rest shape file",
+                       "a rest shape file describes one mesh; expected Adaptive "
+                       "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
     if (!forward || contact)
       return;
@@ -130,6 +133,40 @@ namespace RestShape
   }
 
   void
+  Simulator::setup_problems()
+  {
+    forward->setup();
+    if (contact)
+      {
+        contact->setup();
+        contact->gap_tolerance = parameters.solver.newton_tolerance * mesh->diameter();
+        pcout << "Contact: " << parameters.contact.obstacle_file << ", "
+              << contact->n_candidates() << " candidate nodes, allowed side: "
+              << (parameters.contact.inside ? "inside" : "outside") << std::endl;
+      }
+  }
+
+  VectorType
+  Simulator::initial_rest_shape() const
+  {
+    if (parameters.mesh.rest_shape_file.empty())
+      return forward->zero_vector();
+    const std::vector<Point<3>> rest = mesh->read_rest_shape(parameters.mesh.rest_shape_file);
+    const auto &               vertices = mesh->triangulation().get_vertices();
+    std::vector<Tensor<1, 3>>  w(rest.size());
+    for (unsigned int v = 0; v < rest.size(); ++v)
+      w[v] = rest[v] - vertices[v];
+    const VectorType result = forward->interpolate_vertex_field(w);
+    unsigned int     n_bad  = 0;
+    if (!forward->rest_shape_is_valid(result, n_bad))
+      throw InputError(parameters.mesh.rest_shape_file,
+                       "Mesh/Rest shape file",
+                       std::to_string(n_bad) + " cells are inverted relative to the mesh");
+    pcout << "Rest shape: " << parameters.mesh.rest_shape_file << std::endl;
+    return result;
+  }
+
+  void
   Simulator::prepare_output()
   {
     ensure_writable_directory(parameters.output.directory);
@@ -142,10 +179,10 @@ namespace RestShape
   }
 
   SolveStatistics
-  Simulator::solve_forward()
+  Simulator::solve_forward(const VectorType &rest)
   {
     forward->set_state(forward->zero_vector(), forward->zero_vector(), LoadState());
-    const SolveStatistics stats = forward->solve(forward->scene_load(), forward->zero_vector());
+    const SolveStatistics stats = forward->solve(forward->scene_load(), rest);
     pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED") << " in "
           << stats.newton_iterations << " Newton iterations, " << stats.load_steps
           << " load step(s)" << std::endl;
@@ -157,23 +194,147 @@ namespace RestShape
     return stats;
   }
 
+  SolveStatistics
+  Simulator::solve_inverse(const unsigned int cycle, const VectorType &initial_rest)
+  {
+    InverseProblem inverse(parameters.inverse,
+                           *forward,
+                           contact.get(),
+                           parameters.output.write_vtu ? output.get() : nullptr,
+                           timer,
+                           pcout,
+                           wall_timer);
+    inverse_result = inverse.run(initial_rest, next_step);
+    next_step += inverse.records().size();
+
+    for (const InverseIterationRecord &r : inverse.records())
+      iteration_rows.push_back({double(r.iteration),
+                                r.mean_error * 1e3,
+                                r.max_error * 1e3,
+                                double(r.newton_iterations),
+                                double(r.active_contact_nodes),
+                                r.wall_seconds,
+                                double(r.anderson),
+                                double(cycle)});
+    output->write_csv("iterations.csv",
+                      {"iteration",
+                       "mean_error_mm",
+                       "max_error_mm",
+                       "newton_iterations",
+                       "active_contact_nodes",
+                       "wall_seconds",
+                       "anderson_step",
+                       "cycle"},
+                      iteration_rows);
+
+    summary.set("inverse_iterations", long(inverse_result.iterations));
+    summary.set("forward_solves", long(inverse_result.forward_solves));
+    summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
+    summary.set("mean_error_mm", inverse_result.mean_error * 1e3);
+    summary.set("max_error_mm", inverse_result.max_error * 1e3);
+
+    SolveStatistics stats;
+    stats.converged         = inverse_result.converged;
+    stats.newton_iterations = inverse_result.newton_iterations;
+    stats.load_steps        = 1;
+    stats.reference         = 1;
+    if (!inverse_result.converged)
+      {
+        stats.failure = inverse_result.reason;
+        write_summary(stats);
+        throw SolverFailure("the inverse iteration did not converge: " + inverse_result.reason);
+      }
+    pcout << "  Rest shape found in " << inverse_result.iterations << " iterations ("
+          << inverse_result.forward_solves << " forward solves, "
+          << inverse_result.newton_iterations << " Newton iterations): mean error "
+          << inverse_result.mean_error * 1e3 << " mm, max " << inverse_result.max_error * 1e3
+          << " mm" << std::endl;
+
+    // The rest shape as a mesh (vertices only: the edge nodes of quadratic
+    // elements are not in a linear mesh file), and the pre-stressed state.
+    const VectorType &w        = forward->rest_displacement();
+    const auto &      vertices = mesh->triangulation().get_vertices();
+    std::vector<Point<3>> rest_positions(vertices);
+    for (const auto &cell : forward->dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          for (unsigned int c = 0; c < 3; ++c)
+            rest_positions[cell->vertex_index(v)][c] =
+              vertices[cell->vertex_index(v)][c] + w[cell->vertex_dof_index(v, c)];
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_gmsh(mesh->triangulation(),
+                 [&](unsigned int v) { return rest_positions[v]; },
+                 parameters.mesh.length_unit,
+                 output->path("rest_shape.msh"));
+    return stats;
+  }
+
+  void
+  Simulator::compare_prestress()
+  {
+    // Table 1 of Morin et al.: the same extra force field on (1) the
+    // pre-stressed model (from its equilibrium under the scene's loads) and
+    // (2) the model stress-free in the mesh geometry (no other load).
+    const VectorType d_eq = forward->displacement(), w_rest = forward->rest_displacement();
+    const LoadState  scene = forward->scene_load();
+    const Tensor<1, 3> extra = parameters.prestress_comparison.extra_acceleration;
+    pcout << "Prestress comparison: extra body force " << extra << " m/s^2" << std::endl;
+    LoadState loaded = scene;
+    loaded.acceleration += extra;
+    const SolveStatistics s1 = forward->solve(loaded, w_rest);
+    VectorType            u1 = forward->zero_vector();
+    u1                       = forward->displacement();
+    u1 -= d_eq;
+    const auto prestressed = forward->nodal_norms(u1);
+
+    forward->set_state(forward->zero_vector(), forward->zero_vector(), LoadState());
+    if (contact)
+      contact->reset();
+    LoadState extra_only;
+    extra_only.acceleration = extra;
+    const SolveStatistics s2 = forward->solve(extra_only, forward->zero_vector());
+    const auto unstressed = forward->nodal_norms(forward->displacement());
+
+    const auto increase = [](double a, double b) { return 100. * (b - a) / a; };
+    output->write_text("prestress_comparison.csv", [&](std::ostream &out) {
+      out << std::setprecision(6)
+          << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
+          << "prestressed," << prestressed.first * 1e3 << ',' << prestressed.second * 1e3 << ','
+          << s1.newton_iterations << ',' << s1.converged << '\n'
+          << "not_prestressed," << unstressed.first * 1e3 << ',' << unstressed.second * 1e3
+          << ',' << s2.newton_iterations << ',' << s2.converged << '\n'
+          << "increase_percent," << increase(prestressed.first, unstressed.first) << ','
+          << increase(prestressed.second, unstressed.second) << ",,\n";
+    });
+    summary.set("prestressed_mean_displacement_mm", prestressed.first * 1e3);
+    summary.set("prestressed_max_displacement_mm", prestressed.second * 1e3);
+    summary.set("not_prestressed_mean_displacement_mm", unstressed.first * 1e3);
+    summary.set("not_prestressed_max_displacement_mm", unstressed.second * 1e3);
+    pcout << "  pre-stressed: mean " << prestressed.first * 1e3 << " mm, max "
+          << prestressed.second * 1e3 << " mm; not pre-stressed: mean " << unstressed.first * 1e3
+          << " mm, max " << unstressed.second * 1e3 << " mm (" << std::showpos
+          << increase(prestressed.first, unstressed.first) << " % / "
+          << increase(prestressed.second, unstressed.second) << " %)" << std::noshowpos
+          << std::endl;
+    if (!s1.converged || !s2.converged)
+      {
+        SolveStatistics failed;
+        failed.failure = "prestress comparison: " + (s1.converged ? s2.failure : s1.failure);
+        write_summary(failed);
+        throw SolverFailure("the prestress comparison did not converge: " + failed.failure);
+      }
+  }
+
   void
   Simulator::postprocess(const unsigned int cycle, const SolveStatistics &stats)
   {
     // Nodal displacement from the rest shape, in mm.
-    double max_u = 0, sum_u = 0;
-    for (const Node &node : forward->owned_nodes())
-      {
-        Tensor<1, 3> u;
-        for (unsigned int c = 0; c < 3; ++c)
-          u[c] = forward->displacement()[node.dofs[c]] -
-                 forward->rest_displacement()[node.dofs[c]];
-        max_u = std::max(max_u, u.norm());
-        sum_u += u.norm();
-      }
+    VectorType u = forward->zero_vector();
+    u            = forward->displacement();
+    u -= forward->rest_displacement();
+    const auto [mean_u_m, max_u_m] = forward->nodal_norms(u);
+    const double mean_u = mean_u_m * 1e3, max_u = max_u_m * 1e3;
     const double n_nodes = Utilities::MPI::sum(double(forward->owned_nodes().size()), comm);
-    max_u                = Utilities::MPI::max(max_u, comm) * 1e3;
-    const double mean_u  = Utilities::MPI::sum(sum_u, comm) / n_nodes * 1e3;
 
     const Tensor<1, 3> external = forward->total_external_force(forward->load());
     const Tensor<1, 3> reaction = forward->support_reaction();
@@ -192,9 +353,20 @@ namespace RestShape
     summary.set("n_dofs", long(forward->dof_handler().n_dofs()));
     summary.set("newton_iterations", long(stats.newton_iterations));
     summary.set("load_steps", long(stats.load_steps));
-    summary.set("relative_residual", stats.residual / stats.reference);
+    if (!parameters.inverse.enabled)
+      summary.set("relative_residual", stats.residual / stats.reference);
     summary.set("max_displacement_mm", max_u);
     summary.set("mean_displacement_mm", mean_u);
+    if (!parameters.inverse.enabled && !parameters.mesh.rest_shape_file.empty())
+      {
+        // Started from a rest shape: how far the equilibrium is from the
+        // mesh (target) geometry.
+        const auto [mean_e, max_e] = forward->nodal_norms(forward->displacement());
+        summary.set("mean_error_mm", mean_e * 1e3);
+        summary.set("max_error_mm", max_e * 1e3);
+        pcout << "  Equilibrium vs mesh geometry: mean " << mean_e * 1e3 << " mm, max "
+              << max_e * 1e3 << " mm" << std::endl;
+      }
     summary.set("external_force_N", external);
     summary.set("support_reaction_N", reaction);
     summary.set("force_balance_relative",
@@ -214,44 +386,55 @@ namespace RestShape
     convergence_table.add_value("cycle", cycle);
     convergence_table.add_value("cells", mesh->triangulation().n_global_active_cells());
     convergence_table.add_value("dofs", forward->dof_handler().n_dofs());
-    std::vector<double> row = {double(cycle),
+    std::vector<double>      row    = {double(cycle),
                                double(mesh->triangulation().n_global_active_cells()),
                                double(forward->dof_handler().n_dofs()),
                                double(stats.newton_iterations),
                                max_u};
-    if (exact)
-      {
-        const DisplacementErrors e = exact->errors(*forward);
-        convergence_table.add_value("L2_rel", e.l2_relative);
-        convergence_table.add_value("H1_rel", e.h1_relative);
-        convergence_table.add_value("max_nodal_mm", e.max_nodal_error * 1e3);
-        for (const char *key : {"L2_rel", "H1_rel", "max_nodal_mm"})
-          {
-            convergence_table.set_scientific(key, true);
-            convergence_table.set_precision(key, 3);
-          }
-        row.insert(row.end(), {e.l2_relative, e.h1_relative, e.max_nodal_error * 1e3});
-        summary.set("l2_error_relative", e.l2_relative);
-        summary.set("h1_error_relative", e.h1_relative);
-        summary.set("max_nodal_error_mm", e.max_nodal_error * 1e3);
-        pcout << "  Error against the exact displacement: L2 " << e.l2_relative << ", H1 "
-              << e.h1_relative << " (relative), max nodal " << e.max_nodal_error * 1e3 << " mm"
-              << std::endl;
-      }
-    row.push_back(wall_timer.wall_time());
-    convergence_rows.push_back(row);
-
     std::vector<std::string> header = {"cycle", "n_cells", "n_dofs", "newton_iterations",
                                        "max_displacement_mm"};
+    std::vector<std::string> rated;
+    const auto add_errors = [&](const ExactDisplacement &e, const VectorType &field,
+                                const std::string &prefix, const std::string &key) {
+      const DisplacementErrors errors = e.errors(*forward, field);
+      convergence_table.add_value(prefix + "L2_rel", errors.l2_relative);
+      convergence_table.add_value(prefix + "H1_rel", errors.h1_relative);
+      convergence_table.add_value(prefix + "max_nodal_mm", errors.max_nodal_error * 1e3);
+      for (const std::string k : {"L2_rel", "H1_rel", "max_nodal_mm"})
+        {
+          convergence_table.set_scientific(prefix + k, true);
+          convergence_table.set_precision(prefix + k, 3);
+        }
+      rated.insert(rated.end(), {prefix + "L2_rel", prefix + "H1_rel"});
+      row.insert(row.end(), {errors.l2_relative, errors.h1_relative, errors.max_nodal_error * 1e3});
+      header.insert(header.end(), {key + "l2_error_relative", key + "h1_error_relative",
+                                   key + "max_nodal_error_mm"});
+      summary.set(key + "l2_error_relative", errors.l2_relative);
+      summary.set(key + "h1_error_relative", errors.h1_relative);
+      summary.set(key + "max_nodal_error_mm", errors.max_nodal_error * 1e3);
+      pcout << "  Error of the " << (key.empty() ? "displacement" : "rest shape")
+            << " against the exact one: L2 " << errors.l2_relative << ", H1 "
+            << errors.h1_relative << " (relative), max nodal " << errors.max_nodal_error * 1e3
+            << " mm" << std::endl;
+    };
     if (exact)
-      header.insert(header.end(), {"l2_error_relative", "h1_error_relative", "max_nodal_error_mm"});
+      add_errors(*exact, u, "", "");
+    if (exact_rest)
+      add_errors(*exact_rest, forward->rest_displacement(), "rest_", "rest_");
+    if (parameters.inverse.enabled)
+      {
+        row.push_back(inverse_result.mean_error * 1e3);
+        header.push_back("mean_error_mm");
+      }
+    row.push_back(wall_timer.wall_time());
     header.push_back("wall_seconds");
+    convergence_rows.push_back(row);
     output->write_csv("convergence.csv", header, convergence_rows);
-    if (exact && cycle > 0)
+    if (!rated.empty() && cycle > 0)
       {
         ConvergenceTable table = convergence_table;
-        table.evaluate_convergence_rates("L2_rel", ConvergenceTable::reduction_rate_log2);
-        table.evaluate_convergence_rates("H1_rel", ConvergenceTable::reduction_rate_log2);
+        for (const std::string &key : rated)
+          table.evaluate_convergence_rates(key, ConvergenceTable::reduction_rate_log2);
         output->write_text("convergence.txt", [&](std::ostream &out) { table.write_text(out); });
         if (cycle == parameters.refinement.cycles)
           table.write_text(pcout.get_stream());
@@ -266,31 +449,26 @@ namespace RestShape
             << std::endl;
     if (parameters.output.write_vtu)
       {
-        TimerOutput::Scope scope(timer, "Output");
+        TimerOutput::Scope      scope(timer, "Output");
         std::vector<NodalField> fields;
         VectorType              contact_fields;
         if (contact)
           {
-            contact_fields.reinit(forward->locally_owned_dofs(),
-                                  forward->locally_relevant_dofs(),
-                                  comm);
-            contact_fields = contact->nodal_fields(forward->raw_residual(),
-                                                   1. / parameters.mesh.length_unit);
+            contact_fields = contact->nodal_fields(forward->raw_residual(), output->length_scale());
             fields.push_back({&contact_fields,
                               {"contact_active",
                                "contact_gap_" + parameters.mesh.length_unit_name,
                                "contact_pressure_Pa"},
-                              1.});
+                              1.,
+                              ""});
           }
-        output->write_fields(*forward, cycle, cycle, fields);
+        // The inverse iteration wrote its series; its final state is also
+        // the pre-stressed state a later simulation can start from.
+        if (parameters.inverse.enabled)
+          output->write_fields(*forward, 0, 0, fields, {}, "prestressed_state");
+        else
+          output->write_fields(*forward, next_step++, cycle, fields);
       }
-  }
-
-  void
-  Simulator::refine()
-  {
-    TimerOutput::Scope scope(timer, "Refinement");
-    mesh->refine_global();
   }
 
   void

@@ -43,7 +43,8 @@ namespace RestShape
   };
 
   ExactDisplacement::ExactDisplacement(const std::string &expressions,
-                                       const double       length_unit)
+                                       const double       length_unit,
+                                       const std::string &parameter)
   {
     // deal.II's FunctionParser prints muparser's messages to std::cerr
     // before it throws; keep them off the terminal (we report one line).
@@ -61,7 +62,7 @@ namespace RestShape
       {
         std::cerr.rdbuf(cerr_buffer);
         throw InputError("",
-                         "Verification/Exact displacement",
+                         parameter,
                          "cannot parse '" + expressions + "' (" +
                            one_line_message(exc) +
                            "); expected three muparser expressions of x, y, "
@@ -70,13 +71,12 @@ namespace RestShape
   }
 
   DisplacementErrors
-  ExactDisplacement::errors(const ForwardProblem &problem) const
+  ExactDisplacement::errors(const ForwardProblem &problem, const VectorType &field) const
   {
     const auto &dof_handler = problem.dof_handler();
     const auto  comm = dof_handler.get_triangulation().get_communicator();
     VectorType  u_owned(problem.locally_owned_dofs(), comm);
-    u_owned = problem.displacement();
-    u_owned -= problem.rest_displacement();
+    u_owned = field;
     VectorType u(problem.locally_owned_dofs(), problem.locally_relevant_dofs(), comm);
     u = u_owned;
 

@@ -52,12 +52,16 @@ namespace RestShape
     void
     begin_solve(const VectorType &d);
 
-    /// Remember the contact state of an equilibrium / go back to it (with
-    /// the displacement, when a load increment fails).
+    /// The active and eligible flags of every candidate: saved with an
+    /// equilibrium, restored with it when a step is taken back.
+    using State = std::vector<std::pair<bool, bool>>;
+    State
+    state() const;
     void
-    save_state();
+    set_state(const State &state);
+    /// Forget the active set (a new problem starts).
     void
-    restore_state();
+    reset();
 
     /**
      * Gaps at @p d; eligibility; new active set from the contact forces in
@@ -165,7 +169,6 @@ namespace RestShape
     std::vector<Face>               faces;
     double                          c_scaled = 0;
     std::set<std::size_t>           history;
-    std::vector<std::pair<bool, bool>> saved; // active, eligible
     double                          h_min = 0;
     bool                            releases_frozen = false;
     unsigned int                    n_added = 0, n_released = 0;

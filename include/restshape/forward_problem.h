@@ -108,6 +108,14 @@ namespace RestShape
     zero_vector() const;
 
     /**
+     * A displacement-like field from values at the mesh vertices (indexed
+     * by triangulation vertex), interpolated linearly (P1/Q1) into the
+     * finite element space (owned vector).
+     */
+    VectorType
+    interpolate_vertex_field(const std::vector<dealii::Tensor<1, 3>> &values) const;
+
+    /**
      * Check a rest displacement: false (with the number of bad cells) if
      * det(I + grad w) <= 0 at some quadrature point of a cell, i.e. the rest
      * shape has inverted or degenerate cells.
@@ -145,6 +153,10 @@ namespace RestShape
     materials() const;
 
     // --- derived quantities --------------------------------------------
+    /// Mean and max over all nodes of |v| at the node (v owned or ghosted,
+    /// a displacement-like field; m).
+    std::pair<double, double>
+    nodal_norms(const VectorType &v) const;
     /// Element-averaged von Mises Cauchy stress (Pa) of the current state,
     /// one value per active cell (zero on cells not owned here).
     dealii::Vector<float>

@@ -101,6 +101,17 @@ namespace RestShape
     minimum_cell_diameter() const;
 
     /**
+     * The vertex positions (m) of a rest-shape file: a gmsh file with the
+     * cells of the active mesh, in the same order and with the same vertex
+     * order (what write_gmsh() writes, e.g. an inverse run's
+     * rest_shape.msh, with the same Mesh settings). Indexed by vertex of
+     * the triangulation. Throws InputError naming Mesh/Rest shape file if
+     * the file does not match, or has inverted cells.
+     */
+    std::vector<dealii::Point<3>>
+    read_rest_shape(const std::string &file) const;
+
+    /**
      * Refine every cell once: tetrahedra by red refinement of the mesh
      * description (the triangulation is rebuilt: DoFHandlers must be
      * re-initialised), hexahedra by deal.II.

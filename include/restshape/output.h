@@ -33,9 +33,10 @@ namespace RestShape
   /// three scalar fields stored in the x, y, z slots of each node).
   struct NodalField
   {
-    const VectorType *       vector; // ghosted
+    const VectorType *       vector; // owned or ghosted
     std::vector<std::string> names;  // one name: vector field; three: scalars
     double                   scale = 1;
+    std::string              magnitude_name = ""; // also write |vector| under this name
   };
 
   struct CellField
@@ -57,14 +58,20 @@ namespace RestShape
      * @p step (time value @p time in the .pvd record) on the deformed
      * geometry X + d: displacement (from the rest shape), element-averaged
      * von Mises stress, labels, plus @p extra_nodal and @p extra_cell.
-     * Updates solution.pvd and solution.visit.
+     * Updates solution.pvd and solution.visit; if @p name is given, writes
+     * NAME.vtu (or .pvtu) instead, outside the time series.
      */
     void
     write_fields(const ForwardProblem &         problem,
                  const unsigned int             step,
                  const double                   time,
                  const std::vector<NodalField> &extra_nodal = {},
-                 const std::vector<CellField> & extra_cell  = {});
+                 const std::vector<CellField> & extra_cell  = {},
+                 const std::string &            name        = "");
+
+    /// 1 / (metres per output length unit).
+    double
+    length_scale() const;
 
     /// Write text from rank 0 only, atomically, into the directory.
     void

@@ -42,6 +42,7 @@ namespace RestShape
   struct MeshParameters
   {
     std::string  file;
+    std::string  rest_shape_file; // optional: the rest shape (same mesh)
     std::string  length_unit_name; // "mm" or "m"
     double       length_unit;      // metres per unit of the file
     CellType     cell_type;
@@ -125,7 +126,8 @@ namespace RestShape
 
   struct VerificationParameters
   {
-    std::string exact_displacement; // muparser, 3 components; empty: none
+    std::string exact_displacement;      // muparser, 3 components; empty: none
+    std::string exact_rest_displacement; // the same for X_rest - X
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -170,6 +172,42 @@ namespace RestShape
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  struct InverseParameters
+  {
+    enum class Measure
+    {
+      mean,
+      max
+    };
+    enum class Acceleration
+    {
+      none,
+      anderson
+    };
+    bool         enabled;
+    Measure      measure;
+    double       tolerance; // m
+    unsigned int max_iterations;
+    Acceleration acceleration;
+    unsigned int anderson_depth;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct PrestressComparisonParameters
+  {
+    bool                 enabled;
+    dealii::Tensor<1, 3> extra_acceleration; // m/s^2
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /// All subsections together: what a scene file describes.
   struct Parameters
   {
@@ -183,6 +221,8 @@ namespace RestShape
     VerificationParameters   verification;
     RefinementParameters     refinement;
     ContactParameters        contact;
+    InverseParameters        inverse;
+    PrestressComparisonParameters prestress_comparison;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

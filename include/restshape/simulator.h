@@ -1,6 +1,7 @@
 // A scene run from start to end, in a fixed order (as in step-42):
-// mesh, materials, checks, then for every refinement cycle setup, solve,
-// postprocess; finally the summary and the timing table.
+// mesh, materials, checks, then for every refinement cycle setup, solve
+// (forward, or the inverse rest-shape iteration), postprocess; finally the
+// summary and the timing table.
 #ifndef restshape_simulator_h
 #define restshape_simulator_h
 
@@ -11,6 +12,7 @@
 
 #include <restshape/contact.h>
 #include <restshape/forward_problem.h>
+#include <restshape/inverse_problem.h>
 #include <restshape/material.h>
 #include <restshape/mesh.h>
 #include <restshape/output.h>
@@ -47,15 +49,19 @@ namespace RestShape
     void
     check_scene() const;
     void
+    setup_problems();
+    VectorType
+    initial_rest_shape() const;
+    void
     prepare_output();
     SolveStatistics
-    solve_forward();
+    solve_forward(const VectorType &rest);
+    SolveStatistics
+    solve_inverse(const unsigned int cycle, const VectorType &initial_rest);
+    void
+    compare_prestress();
     void
     postprocess(const unsigned int cycle, const SolveStatistics &stats);
-    void
-    refine();
-    void
-    setup_problems();
     void
     write_summary(const SolveStatistics &stats);
 
@@ -72,11 +78,13 @@ namespace RestShape
     std::unique_ptr<ForwardProblem>    forward;
     std::unique_ptr<ContactProblem>    contact;
     std::unique_ptr<OutputWriter>      output;
-    std::unique_ptr<ExactDisplacement> exact;
+    std::unique_ptr<ExactDisplacement> exact, exact_rest;
 
     Summary                          summary;
     dealii::ConvergenceTable         convergence_table;
-    std::vector<std::vector<double>> convergence_rows;
+    std::vector<std::vector<double>> convergence_rows, iteration_rows;
+    unsigned int                     next_step = 0; // VTU numbering
+    InverseResult                    inverse_result;
   };
 } // namespace RestShape
 

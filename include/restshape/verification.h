@@ -28,11 +28,14 @@ namespace RestShape
      * (metres per unit) as functions of x, y, z in the same unit. Throws
      * InputError naming Verification/Exact displacement.
      */
-    ExactDisplacement(const std::string &expressions, const double length_unit);
+    ExactDisplacement(const std::string &expressions,
+                      const double       length_unit,
+                      const std::string &parameter = "Verification/Exact displacement");
 
-    /// Errors of the displacement d - w of @p problem (from the rest shape).
+    /// Errors of the field @p u (owned or ghosted, in the DoF layout of
+    /// @p problem), e.g. the displacement d - w or the rest displacement w.
     DisplacementErrors
-    errors(const ForwardProblem &problem) const;
+    errors(const ForwardProblem &problem, const VectorType &u) const;
 
   private:
     class SIFunction;

@@ -1,0 +1,54 @@
+#!/bin/bash
+# Benchmark: the inverse iteration with the paper's update ("none") and with
+# Anderson acceleration, each with the consistent and the SOFA-style
+# ("warped") tangent, on the same scene and tolerance, in one run. Prints a
+# markdown table: forward solves, Newton iterations, wall time, and ratios
+# to the paper's method (none + warped).
+#
+# usage: benchmarks/inverse_acceleration/run.sh [--coarse] [SCENE.prm] [--set ...]
+#   --coarse: P1 elements and a looser tolerance (the version run in the tests)
+# Run from the repository root after building (build/restshape).
+set -u
+exe=${RESTSHAPE:-build/restshape}
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-output/benchmarks/inverse_acceleration}
+scene=$here/scene.prm
+extra=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+  --coarse) extra+=(--set "Discretization/Polynomial degree=1" --set "Inverse problem/Tolerance=1e-3") ;;
+  --set) extra+=(--set "$2"); shift ;;
+  *) scene=$1 ;;
+  esac
+  shift
+done
+mkdir -p "$out"
+value() { grep "\"$1\"" "$2" | sed 's/.*: \([^,]*\),*/\1/'; }
+
+echo "scene: $scene ${extra[*]:-}"
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo
+echo "| update | tangent | converged | iterations | forward solves | Newton iterations | wall s | forward solves / paper | Newton / paper | time / paper |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+status=0
+for acceleration in none anderson; do
+  for tangent in warped consistent; do
+    dir=$out/${acceleration}_$tangent
+    "$exe" "${extra[@]}" --set "Inverse problem/Acceleration=$acceleration" \
+      --set "Discretization/Tangent=$tangent" --set "Output/Directory=$dir" "$scene" >"$dir.log" 2>&1
+    s=$dir/summary.json
+    converged=$(value converged "$s")
+    [ "$converged" = "true" ] || status=1
+    its=$(value inverse_iterations "$s")
+    fs=$(value forward_solves "$s")
+    newton=$(value newton_iterations "$s")
+    wall=$(value wall_seconds "$s")
+    if [ "$acceleration$tangent" = "nonewarped" ]; then
+      fs0=$fs newton0=$newton wall0=$wall
+    fi
+    awk -v a="$acceleration" -v t="$tangent" -v c="$converged" -v i="$its" -v f="$fs" -v n="$newton" \
+      -v w="$wall" -v f0="$fs0" -v n0="$newton0" -v w0="$wall0" \
+      'BEGIN { printf "| %s | %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %.2f |\n", a, t, c, i, f, n, w, f/f0, n/n0, w/w0 }'
+  done
+done
+exit $status

@@ -1,0 +1,263 @@
+#include <restshape/inverse_problem.h>
+
+#include <cstdio>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    mm(const double metres)
+    {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * 1e3);
+      return buffer;
+    }
+  } // namespace
+
+  InverseProblem::InverseProblem(const InverseParameters &parameters,
+                                 ForwardProblem &         forward,
+                                 ContactProblem *         contact,
+                                 OutputWriter *           output,
+                                 TimerOutput &            timer,
+                                 ConditionalOStream &     pcout,
+                                 const Timer &            wall_timer)
+    : parameters(parameters)
+    , forward(forward)
+    , contact(contact)
+    , output(output)
+    , timer(timer)
+    , pcout(pcout)
+    , wall_timer(wall_timer)
+  {}
+
+  double
+  InverseProblem::measure(const std::pair<double, double> &errors) const
+  {
+    return parameters.measure == InverseParameters::Measure::mean ? errors.first : errors.second;
+  }
+
+  const std::vector<InverseIterationRecord> &
+  InverseProblem::records() const
+  {
+    return history;
+  }
+
+  void
+  InverseProblem::record(const unsigned int     iteration,
+                         const SolveStatistics &stats,
+                         const bool             anderson)
+  {
+    const auto errors = forward.nodal_norms(forward.displacement());
+    history.push_back({iteration,
+                       errors.first,
+                       errors.second,
+                       stats.newton_iterations,
+                       contact != nullptr ? contact->n_active() : 0,
+                       wall_timer.wall_time(),
+                       anderson});
+    pcout << "Inverse iteration " << iteration << ": mean error " << mm(errors.first)
+          << ", max " << mm(errors.second) << " (" << stats.newton_iterations
+          << " Newton iterations" << (anderson ? ", Anderson step" : "")
+          << (contact != nullptr ? ", " + std::to_string(history.back().active_contact_nodes) +
+                                     " contact nodes" :
+                                   std::string())
+          << ")" << std::endl;
+  }
+
+  void
+  InverseProblem::write_output(const unsigned int step, const unsigned int iteration)
+  {
+    if (output == nullptr)
+      return;
+    TimerOutput::Scope scope(timer, "Output");
+    // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
+    VectorType error = forward.zero_vector(), target = forward.zero_vector();
+    error -= forward.displacement();
+    for (const Node &node : forward.owned_nodes())
+      for (unsigned int c = 0; c < 3; ++c)
+        target[node.dofs[c]] = node.position[c];
+    target.compress(VectorOperation::insert);
+    VectorType rest = target, equilibrium = target;
+    rest += forward.rest_displacement();
+    equilibrium += forward.displacement();
+
+    const std::string unit  = output->length_unit_name;
+    const double      scale = output->length_scale();
+    std::vector<NodalField> fields = {{&error, {"error_" + unit}, scale, "error_magnitude_" + unit},
+                                      {&target, {"target_position_" + unit}, scale, ""},
+                                      {&rest, {"rest_position_" + unit}, scale, ""},
+                                      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""}};
+    VectorType contact_fields;
+    if (contact != nullptr)
+      {
+        contact_fields = contact->nodal_fields(forward.raw_residual(), scale);
+        fields.push_back({&contact_fields,
+                          {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
+                          1.,
+                          ""});
+      }
+    output->write_fields(forward, step, iteration, fields);
+  }
+
+  InverseResult
+  InverseProblem::run(const VectorType &initial_rest, const unsigned int first_step)
+  {
+    InverseResult result;
+    history.clear();
+    const LoadState load = forward.scene_load();
+    const auto      finish = [&](const std::string &reason) {
+      result.reason    = reason;
+      const auto e     = forward.nodal_norms(forward.displacement());
+      result.mean_error = e.first;
+      result.max_error  = e.second;
+      if (!reason.empty())
+        pcout << "Inverse iteration stopped: " << reason << std::endl;
+      return result;
+    };
+
+    // Iteration 0: the forward problem from the initial rest shape (the
+    // target itself unless a rest shape was given), loaded from zero.
+    forward.set_state(forward.zero_vector(), forward.zero_vector(), LoadState());
+    SolveStatistics stats = forward.solve(load, initial_rest);
+    ++result.forward_solves;
+    result.newton_iterations += stats.newton_iterations;
+    if (!stats.converged)
+      return finish("the forward solve from the initial rest shape did not converge: " +
+                    stats.failure);
+    record(0, stats, false);
+    write_output(first_step, 0);
+
+    const double initial = measure(forward.nodal_norms(forward.displacement()));
+    double       previous = initial, best = initial;
+    unsigned int since_best = 0, increases = 0;
+    if (initial <= parameters.tolerance)
+      {
+        result.converged = true;
+        return finish("");
+      }
+
+    const bool          accelerate = parameters.acceleration == InverseParameters::Acceleration::anderson;
+    AndersonAccelerator anderson(parameters.anderson_depth);
+    VectorType          w = initial_rest, d = forward.zero_vector();
+    d                     = forward.displacement();
+    bool   force_plain    = false;
+    double step           = 1; // < 1 after a plain step's forward solve failed
+
+    while (result.iterations < parameters.max_iterations)
+      {
+        // The fixed point: e = X_target - X_eq = -d; plain update w + e.
+        VectorType f = forward.zero_vector();
+        f -= d;
+        VectorType plain = w;
+        plain.add(step, f);
+        VectorType candidate   = plain;
+        bool       accelerated = false;
+        if (accelerate && step == 1)
+          {
+            if (force_plain)
+              anderson.reset();
+            candidate   = anderson.next(w, f);
+            accelerated = anderson.columns_used() > 0;
+          }
+        force_plain = false;
+
+        // Never a rest shape with an inverted or degenerate cell.
+        unsigned int n_bad = 0;
+        if (!forward.rest_shape_is_valid(candidate, n_bad))
+          {
+            if (accelerated)
+              {
+                pcout << "  Anderson step would invert " << n_bad << " cells: plain update"
+                      << std::endl;
+                anderson.reset();
+                anderson.next(w, f);
+                candidate   = plain;
+                accelerated = false;
+              }
+            for (double beta = 0.5 * step; !forward.rest_shape_is_valid(candidate, n_bad); beta /= 2)
+              {
+                if (beta < 1. / 64)
+                  return finish("every rest-shape update, even shortened 64 times, would "
+                                "invert " + std::to_string(n_bad) + " cells (iteration " +
+                                std::to_string(result.iterations + 1) + ", error " +
+                                mm(previous) + ")");
+                candidate = w;
+                candidate.add(beta, f);
+                pcout << "  The update would invert " << n_bad << " cells: shortened to "
+                      << beta << std::endl;
+              }
+          }
+
+        // Forward solve from the last equilibrium, the rest shape moving
+        // from w to the candidate.
+        const auto contact_state = contact != nullptr ? contact->state() : ContactProblem::State();
+        stats                    = forward.solve(load, candidate);
+        ++result.forward_solves;
+        result.newton_iterations += stats.newton_iterations;
+        const auto   errors = forward.nodal_norms(forward.displacement());
+        const double error  = measure(errors);
+        if (!stats.converged || (accelerated && error > previous))
+          {
+            // Back to the last iterate; the plain update follows.
+            forward.set_state(d, w, load);
+            if (contact != nullptr)
+              contact->set_state(contact_state);
+            if (!accelerated)
+              {
+                // Backtrack: a shorter plain step, at most three times.
+                if (step > 0.2)
+                  {
+                    step /= 2;
+                    pcout << "  The forward solve failed (" << stats.failure
+                          << "): the update is shortened to " << step << std::endl;
+                    ++result.rejected_steps;
+                    continue;
+                  }
+                return finish("the forward solve of iteration " +
+                              std::to_string(result.iterations + 1) +
+                              " did not converge, even with the update shortened to " +
+                              std::to_string(step) + ": " + stats.failure);
+              }
+            pcout << "  Anderson step rejected ("
+                  << (stats.converged ? "error " + mm(error) + " > " + mm(previous) :
+                                        "forward solve failed: " + stats.failure)
+                  << "): plain update" << std::endl;
+            ++result.rejected_steps;
+            force_plain = true;
+            continue;
+          }
+
+        w    = candidate;
+        d    = forward.displacement();
+        step = 1;
+        ++result.iterations;
+        record(result.iterations, stats, accelerated);
+        write_output(first_step + result.iterations, result.iterations);
+
+        if (error <= parameters.tolerance)
+          {
+            result.converged = true;
+            return finish("");
+          }
+        increases = (error > previous) ? increases + 1 : 0;
+        if (error > 2 * initial || increases >= 3)
+          return finish("diverged: the error grew from " + mm(initial) + " to " + mm(error) +
+                        " in " + std::to_string(result.iterations) + " iterations");
+        if (error < 0.99 * best)
+          {
+            best       = error;
+            since_best = 0;
+          }
+        else if (++since_best >= 10)
+          return finish("stagnated: the error has not improved by 1 % in 10 iterations (best " +
+                        mm(best) + ", tolerance " + mm(parameters.tolerance) + ")");
+        previous = error;
+      }
+    return finish("not converged after " + std::to_string(parameters.max_iterations) +
+                  " iterations (error " + mm(previous) + ", tolerance " +
+                  mm(parameters.tolerance) + ")");
+  }
+} // namespace RestShape
