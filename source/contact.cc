@@ -175,6 +175,8 @@ namespace RestShape
     history.clear();
     releases_frozen = false;
     n_added = n_released = 0;
+    n_updates = n_thaws = 0;
+    freeze_at           = 10;
     for (Candidate &c : candidates)
       {
         const Point<3> x  = position(c, d);
@@ -229,7 +231,14 @@ namespace RestShape
         const Point<3> x = position(c, d);
         const Gap      g = obstacle->gap(x);
         c.gap            = g.gap;
-        c.normal         = g.normal;
+        // Once releases are frozen the active set only grows, and an active
+        // node keeps the normal it had: a node on a sharp ridge of the
+        // obstacle (or where the closest triangle alternates) would
+        // otherwise flip between two normals at every iterate (a 2-cycle
+        // with a constant active set). Its gap keeps being measured, so it
+        // still ends on the surface.
+        if (!(releases_frozen && c.active))
+          c.normal = g.normal;
         if (c.owned && !c.eligible &&
             (g.gap >= -gap_tolerance || obstacle->n_crossings(c.previous_position, x) >= 2))
           c.eligible = true;
@@ -264,8 +273,39 @@ namespace RestShape
     // nodes may still be added but no longer released, which ends the cycle.
     if (changed && history.count(hash) && !releases_frozen)
       releases_frozen = true;
+    // A soft body pivoting against a curved obstacle can wander through
+    // many active sets without repeating one: after freeze_at updates the
+    // set only grows, which ends in a converged state; thaw_if_adhesive()
+    // then releases nodes that pull.
+    if (++n_updates >= freeze_at)
+      releases_frozen = true;
     history.insert(hash);
     return changed;
+  }
+
+  bool
+  ContactProblem::thaw_if_adhesive(const VectorType &raw_residual)
+  {
+    if (!releases_frozen || n_thaws >= 3)
+      return false;
+    const std::vector<double> p = pressures(raw_residual);
+    double                    largest = 0, most_tensile = 0;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          largest      = std::max(largest, std::abs(p[i]));
+          most_tensile = std::min(most_tensile, p[i]);
+        }
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    largest             = Utilities::MPI::max(largest, comm);
+    most_tensile        = Utilities::MPI::min(most_tensile, comm);
+    if (most_tensile >= -1e-3 * largest)
+      return false;
+    releases_frozen = false;
+    history.clear();
+    freeze_at = n_updates + 10;
+    ++n_thaws;
+    return true;
   }
 
   double

@@ -524,7 +524,12 @@ namespace RestShape
 
         if (residual <= tol * reference &&
             (contact == nullptr || (!set_changed && contact->is_satisfied())))
-          return true;
+          {
+            if (contact == nullptr || !contact->thaw_if_adhesive(residual_raw))
+              return true;
+            pcout << "      active nodes pull on the obstacle: releases allowed again"
+                  << std::endl;
+          }
 
         newton_update = 0;
         {

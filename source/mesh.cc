@@ -410,6 +410,19 @@ namespace RestShape
   }
 
   void
+  write_gmsh(const MeshDescription &mesh,
+             const double           length_unit,
+             const std::string &    file)
+  {
+    Triangulation<3> tria;
+    tria.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
+    write_gmsh(tria,
+               [&](const unsigned int v) { return tria.get_vertices()[v]; },
+               length_unit,
+               file);
+  }
+
+  void
   write_gmsh(const Triangulation<3> &                      tria,
              const std::function<Point<3>(unsigned int)> &position,
              const double                                  length_unit,

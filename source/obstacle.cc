@@ -33,9 +33,54 @@ namespace RestShape
   {
     Mesh                                         mesh;
     std::unique_ptr<Tree>                        tree;
-    double                                       size = 0; // bounding-box diagonal
     std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
+    /// Per face, the smoothed normals at its three corners (see gap()).
+    std::vector<std::array<dealii::Tensor<1, 3>, 3>> corner_normals;
   };
+
+  namespace
+  {
+    dealii::Tensor<1, 3>
+    tensor(const Kernel::Vector_3 &v)
+    {
+      return dealii::Tensor<1, 3>({v.x(), v.y(), v.z()});
+    }
+
+    /// Outward normal at every corner of every face: the area-weighted mean
+    /// of the normals of the faces around that vertex that lie within
+    /// `feature_angle` of the face's own normal. Across smooth parts (a
+    /// skull) the normal field becomes continuous; sharp edges (a box)
+    /// stay sharp.
+    std::vector<std::array<dealii::Tensor<1, 3>, 3>>
+    smoothed_corner_normals(const Mesh &mesh, const double feature_angle)
+    {
+      std::vector<dealii::Tensor<1, 3>> area_normal(mesh.number_of_faces());
+      for (const auto f : mesh.faces())
+        {
+          std::vector<CPoint> c;
+          for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+            c.push_back(mesh.point(v));
+          area_normal[f.idx()] = 0.5 * tensor(CGAL::cross_product(c[1] - c[0], c[2] - c[0]));
+        }
+      const double cos_feature = std::cos(feature_angle);
+      std::vector<std::array<dealii::Tensor<1, 3>, 3>> result(mesh.number_of_faces());
+      for (const auto f : mesh.faces())
+        {
+          const dealii::Tensor<1, 3> own = area_normal[f.idx()] / area_normal[f.idx()].norm();
+          unsigned int corner = 0;
+          for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+            {
+              dealii::Tensor<1, 3> sum;
+              for (const auto g : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+                if (g != Mesh::null_face() &&
+                    area_normal[g.idx()] * own >= cos_feature * area_normal[g.idx()].norm())
+                  sum += area_normal[g.idx()];
+              result[f.idx()][corner++] = sum / sum.norm();
+            }
+        }
+      return result;
+    }
+  } // namespace
 
   Obstacle::Obstacle(const std::string &file, const double length_unit, const bool inside)
     : data(std::make_unique<Data>())
@@ -85,12 +130,9 @@ namespace RestShape
       }
 
     data->tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
-    const auto box = data->tree->bbox();
-    data->size     = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) +
-                           std::pow(box.ymax() - box.ymin(), 2) +
-                           std::pow(box.zmax() - box.zmin(), 2));
     data->tree->accelerate_distance_queries();
     data->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*data->tree);
+    data->corner_normals = smoothed_corner_normals(mesh, 30. * M_PI / 180.);
   }
 
   Obstacle::~Obstacle() = default;
@@ -108,49 +150,31 @@ namespace RestShape
 
     Gap result;
     result.gap = allowed ? distance : -distance;
-    // The gradient of the signed distance. On (or very near) the surface,
-    // where the direction to the closest point is round-off noise, the
-    // pseudo-normal: the sum of the distinct normals of all faces as close
-    // as the closest one (one face inside a facet; two on an edge, three at
-    // a corner), which does not flip between faces with round-off.
-    const double tolerance = 1e-8 * data->size;
-    if (distance > tolerance)
-      {
-        result.normal = (allowed ? 1. : -1.) * to_point / distance;
-        return result;
-      }
-    std::vector<Primitive::Id> near;
-    const CGAL::Bbox_3 box(p.x() - 2 * tolerance, p.y() - 2 * tolerance, p.z() - 2 * tolerance,
-                           p.x() + 2 * tolerance, p.y() + 2 * tolerance, p.z() + 2 * tolerance);
-    data->tree->all_intersected_primitives(box, std::back_inserter(near));
-    if (near.empty())
-      near.push_back(face);
-    std::vector<dealii::Tensor<1, 3>> normals;
-    for (const auto f : near)
-      {
-        std::vector<CPoint> corners;
-        for (const auto v : CGAL::vertices_around_face(data->mesh.halfedge(f), data->mesh))
-          corners.push_back(data->mesh.point(v));
-        const Kernel::Triangle_3 t(corners[0], corners[1], corners[2]);
-        if (std::sqrt(CGAL::squared_distance(t, p)) > distance + tolerance)
-          continue;
-        const auto           n = PMP::compute_face_normal(f, data->mesh);
-        dealii::Tensor<1, 3> normal({n.x(), n.y(), n.z()});
-        bool                 known = false;
-        for (const auto &m : normals)
-          known = known || (m - normal).norm() < 1e-10;
-        if (!known)
-          normals.push_back(normal);
-      }
-    dealii::Tensor<1, 3> sum;
-    for (const auto &n : normals)
-      sum += n;
-    if (sum.norm() < 1e-12)
-      {
-        const auto n = PMP::compute_face_normal(face, data->mesh);
-        sum          = dealii::Tensor<1, 3>({n.x(), n.y(), n.z()});
-      }
-    result.normal = (inside ? -1. : 1.) * sum / sum.norm();
+    // The normal: the smoothed (Phong) normal at the closest point, i.e. the
+    // barycentric interpolation of the face's corner normals. A piecewise
+    // flat skull has a normal that jumps across every edge; a node resting
+    // in a crease between two faces then flips between them and the active
+    // set never settles. The interpolated field is continuous over smooth
+    // parts of the surface (the faces around a vertex within 30 degrees of
+    // each other) and keeps sharp edges sharp, so flat obstacles and boxes
+    // get their exact face normals.
+    std::vector<CPoint> c;
+    for (const auto v : CGAL::vertices_around_face(data->mesh.halfedge(face), data->mesh))
+      c.push_back(data->mesh.point(v));
+    const auto   n_face = CGAL::cross_product(c[1] - c[0], c[2] - c[0]);
+    const double area2  = n_face.squared_length();
+    std::array<double, 3> weight;
+    for (unsigned int i = 0; i < 3; ++i)
+      weight[i] = std::max(0.,
+                           CGAL::cross_product(c[(i + 2) % 3] - c[(i + 1) % 3], closest - c[(i + 1) % 3]) *
+                             n_face / area2);
+    const auto &         corners = data->corner_normals[face.idx()];
+    dealii::Tensor<1, 3> normal  = weight[0] * corners[0] + weight[1] * corners[1] +
+                                  weight[2] * corners[2];
+    if (normal.norm() < 1e-12)
+      normal = tensor(n_face);
+    // Corner normals point out of the enclosed region.
+    result.normal = (inside ? -1. : 1.) * normal / normal.norm();
     return result;
   }
 

@@ -88,6 +88,16 @@ namespace RestShape
     add_constraints(dealii::AffineConstraints<double> &      constraints,
                     const dealii::AffineConstraints<double> &base) const;
 
+    /**
+     * Called when Newton has converged with releases frozen (cycling, or
+     * more than 10 active-set updates in this solve): if an active node
+     * then pulls on the obstacle (tensile contact pressure), releases are
+     * allowed again and true is returned (Newton goes on); at most three
+     * times per solve.
+     */
+    bool
+    thaw_if_adhesive(const VectorType &raw_residual);
+
     /// No eligible node beyond the obstacle and every active node on it
     /// (within g_tol) at the state of the last update.
     bool
@@ -171,6 +181,7 @@ namespace RestShape
     std::set<std::size_t>           history;
     double                          h_min = 0;
     bool                            releases_frozen = false;
+    unsigned int                    n_updates = 0, freeze_at = 10, n_thaws = 0;
     unsigned int                    n_added = 0, n_released = 0;
   };
 } // namespace RestShape

@@ -67,6 +67,12 @@ namespace RestShape
              const double                                         length_unit,
              const std::string &                                  file);
 
+  /// The same for a mesh description (vertices in metres).
+  void
+  write_gmsh(const MeshDescription &mesh,
+             const double           length_unit,
+             const std::string &    file);
+
   /**
    * The computational mesh of a scene: the triangulation (distributed when
    * run under MPI: shared for tetrahedra, p4est for hexahedra) and its

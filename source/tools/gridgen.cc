@@ -185,18 +185,20 @@ main(int argc, char **argv)
               while (std::next_permutation(axes.begin(), axes.end()));
             }
 
-      Triangulation<3> tria;
+      std::size_t n_cells = mesh.cells.size(), n_vertices = mesh.vertices.size();
       if (tets24)
         {
-          Triangulation<3> hexes;
+          Triangulation<3> hexes, tria;
           hexes.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
           GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+          write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
+          n_cells    = tria.n_active_cells();
+          n_vertices = tria.n_used_vertices();
         }
       else
-        tria.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
-      write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
-      std::cout << out << ": " << tria.n_active_cells() << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
-                << tria.n_used_vertices() << " vertices" << std::endl;
+        write_gmsh(mesh, 1.0, out);
+      std::cout << out << ": " << n_cells << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
+                << n_vertices << " vertices" << std::endl;
     }
   catch (const std::exception &exc)
     {

@@ -1,0 +1,382 @@
+#include <restshape/image_mesher.h>
+#include <restshape/input_error.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Image_3.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+namespace RestShape
+{
+  namespace
+  {
+    using Kernel   = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Domain   = CGAL::Labeled_mesh_domain_3<Kernel>;
+    using Tr       = CGAL::Mesh_triangulation_3<Domain>::type;
+    using C3t3     = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+    using Criteria = CGAL::Mesh_criteria_3<Tr>;
+    using Point    = Kernel::Point_3;
+    namespace params = CGAL::parameters;
+
+    /// CGAL meshes in "scaled index space" (i h0, j h1, k h2); this maps such
+    /// a point to the image's world coordinates (mm).
+    struct ToWorld
+    {
+      explicit ToWorld(const LabelledImage &image)
+        : image(image)
+        , h(image.spacing())
+      {}
+      dealii::Point<3>
+      operator()(const double x, const double y, const double z) const
+      {
+        return image.position(x / h[0], y / h[1], z / h[2]);
+      }
+      bool
+      mirrors() const
+      {
+        return dealii::determinant(image.index_to_mm) < 0;
+      }
+      const LabelledImage & image;
+      std::array<double, 3> h;
+    };
+
+    /// Mesh_3 draws random numbers: a fixed seed makes the mesh reproducible.
+    void
+    seed_cgal(const unsigned int seed)
+    {
+      CGAL::get_default_random() = CGAL::Random(seed);
+    }
+
+    /// Squared Euclidean distance transform along one line (Felzenszwalb and
+    /// Huttenlocher 2012), samples @p h apart.
+    void
+    distance_transform_1d(std::vector<double> &      f,
+                          const double               h,
+                          std::vector<unsigned int> &v,
+                          std::vector<double> &      z,
+                          std::vector<double> &      d)
+    {
+      const unsigned int n = f.size();
+      const double       h2 = h * h;
+      auto intersection = [&](const unsigned int q, const unsigned int p) {
+        return ((f[q] + h2 * q * q) - (f[p] + h2 * p * p)) /
+               (2 * h2 * (double(q) - double(p)));
+      };
+      unsigned int k = 0;
+      v[0]           = 0;
+      z[0]           = -std::numeric_limits<double>::infinity();
+      z[1]           = std::numeric_limits<double>::infinity();
+      for (unsigned int q = 1; q < n; ++q)
+        {
+          double s = intersection(q, v[k]);
+          while (s <= z[k])
+            {
+              --k;
+              s = intersection(q, v[k]);
+            }
+          ++k;
+          v[k]     = q;
+          z[k]     = s;
+          z[k + 1] = std::numeric_limits<double>::infinity();
+        }
+      k = 0;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          while (z[k + 1] < q)
+            ++k;
+          const double dq = double(q) - double(v[k]);
+          d[q]            = h2 * dq * dq + f[v[k]];
+        }
+      f = d;
+    }
+  } // namespace
+
+  MeshDescription
+  mesh_labelled_image(const LabelledImage &image, const ImageMeshOptions &options)
+  {
+    const ToWorld to_world(image);
+    const auto &  h = to_world.h;
+
+    _image *raw = ::_createImage(image.size[0], image.size[1], image.size[2], 1,
+                                 h[0], h[1], h[2], 1, WK_FIXED, SGN_UNSIGNED);
+    std::memcpy(raw->data, image.labels.data(), image.labels.size());
+    const CGAL::Image_3 cgal_image(raw);
+
+    const Domain domain = Domain::create_labeled_image_mesh_domain(
+      cgal_image, params::relative_error_bound = 1e-6);
+    const Criteria criteria(params::facet_angle = options.facet_angle,
+                            params::facet_size = options.facet_size,
+                            params::facet_distance = options.facet_distance,
+                            params::cell_radius_edge_ratio = options.radius_edge,
+                            params::cell_size = options.cell_size);
+    seed_cgal(options.seed);
+    const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
+      domain,
+      criteria,
+      params::perturb(params::sliver_bound = options.sliver_bound,
+                      params::time_limit = 0),
+      params::exude(params::sliver_bound = options.sliver_bound,
+                    params::time_limit = 0));
+
+    MeshDescription                             mesh;
+    std::map<Tr::Vertex_handle, unsigned int>   index;
+    const bool                                  mirrors = to_world.mirrors();
+    for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      {
+        dealii::CellData<3> cell(4);
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            const auto vh       = c->vertex(v);
+            const auto inserted = index.emplace(vh, mesh.vertices.size());
+            if (inserted.second)
+              {
+                const auto p = vh->point();
+                mesh.vertices.push_back(to_world(CGAL::to_double(p.x()),
+                                                 CGAL::to_double(p.y()),
+                                                 CGAL::to_double(p.z())));
+              }
+            cell.vertices[v] = inserted.first->second;
+          }
+        if (mirrors)
+          std::swap(cell.vertices[0], cell.vertices[1]);
+        cell.material_id = c3t3.subdomain_index(c);
+        mesh.cells.push_back(cell);
+      }
+    return mesh;
+  }
+
+  MeshQuality
+  mesh_quality(const MeshDescription &tets)
+  {
+    using dealii::Tensor;
+    MeshQuality q;
+    double      sum_ratio = 0;
+    for (const auto &cell : tets.cells)
+      {
+        std::array<dealii::Point<3>, 4> p;
+        for (unsigned int v = 0; v < 4; ++v)
+          p[v] = tets.vertices[cell.vertices[v]];
+        const Tensor<1, 3> a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
+        const double       six_volume = a * dealii::cross_product_3d(b, c);
+        q.min_volume = (q.total_volume == 0 ? six_volume / 6 :
+                                              std::min(q.min_volume, six_volume / 6));
+        q.total_volume += six_volume / 6;
+
+        // Circumradius over shortest edge.
+        const Tensor<1, 3> centre =
+          (a.norm_square() * dealii::cross_product_3d(b, c) +
+           b.norm_square() * dealii::cross_product_3d(c, a) +
+           c.norm_square() * dealii::cross_product_3d(a, b)) /
+          (2 * six_volume);
+        double shortest = std::numeric_limits<double>::max();
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = i + 1; j < 4; ++j)
+            shortest = std::min(shortest, p[i].distance(p[j]));
+        const double ratio = centre.norm() / shortest;
+        q.max_radius_edge  = std::max(q.max_radius_edge, ratio);
+        sum_ratio += ratio;
+
+        // Outward unit normals of the faces opposite each vertex; the
+        // dihedral angle at the edge shared by faces k and l is
+        // pi - angle(n_k, n_l).
+        std::array<Tensor<1, 3>, 4> n;
+        for (unsigned int m = 0; m < 4; ++m)
+          {
+            const unsigned int i = (m + 1) % 4, j = (m + 2) % 4, k = (m + 3) % 4;
+            Tensor<1, 3> normal = dealii::cross_product_3d(p[j] - p[i], p[k] - p[i]);
+            if (normal * (p[i] - p[m]) < 0)
+              normal = -normal;
+            n[m] = normal / normal.norm();
+          }
+        double smallest = 180;
+        for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int l = k + 1; l < 4; ++l)
+            {
+              const double angle =
+                180 - std::acos(std::clamp(n[k] * n[l], -1., 1.)) * 180 / M_PI;
+              smallest           = std::min(smallest, angle);
+              q.max_dihedral_deg = std::max(q.max_dihedral_deg, angle);
+            }
+        q.min_dihedral_deg = std::min(q.min_dihedral_deg, smallest);
+        if (smallest < 10)
+          ++q.n_below_10_deg;
+      }
+    if (!tets.cells.empty())
+      q.mean_radius_edge = sum_ratio / tets.cells.size();
+    return q;
+  }
+
+  unsigned int
+  write_enclosing_surface(const LabelledImage &image,
+                          const double         gap,
+                          const double         closing,
+                          const double         facet_size,
+                          const double         facet_distance,
+                          const std::string &  file)
+  {
+    const ToWorld to_world(image);
+    const auto &  h     = to_world.h;
+    const double  h_min = *std::min_element(h.begin(), h.end());
+
+    // The distance grid: the image padded so that the level set fits.
+    const int pad = int(std::ceil((closing + gap + facet_size) / h_min)) + 2;
+    std::array<unsigned int, 3> n;
+    for (unsigned int d = 0; d < 3; ++d)
+      n[d] = image.size[d] + 2 * pad;
+    const auto at = [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+      return i + std::size_t(n[0]) * (j + std::size_t(n[1]) * k);
+    };
+    std::vector<bool> region(std::size_t(n[0]) * n[1] * n[2], false);
+    for (unsigned int k = 0; k < image.size[2]; ++k)
+      for (unsigned int j = 0; j < image.size[1]; ++j)
+        for (unsigned int i = 0; i < image.size[0]; ++i)
+          if (image.labels[image.index(i, j, k)] != 0)
+            region[at(i + pad, j + pad, k + pad)] = true;
+
+    // Exact Euclidean distance (mm) from every voxel centre to the nearest
+    // centre of a voxel of @p mask: separable transform, axis after axis.
+    const auto distance_to = [&](const std::vector<bool> &mask) {
+      std::vector<double> dist(mask.size());
+      for (std::size_t v = 0; v < mask.size(); ++v)
+        dist[v] = mask[v] ? 0. : 1e20;
+      const unsigned int        n_max = *std::max_element(n.begin(), n.end());
+      std::vector<double>       line, z(n_max + 1), d(n_max);
+      std::vector<unsigned int> v(n_max);
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        {
+          const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+          for (unsigned int ib = 0; ib < n[b]; ++ib)
+            for (unsigned int ia = 0; ia < n[a]; ++ia)
+              {
+                std::array<unsigned int, 3> ijk;
+                ijk[a] = ia;
+                ijk[b] = ib;
+                line.resize(n[axis]);
+                d.resize(n[axis]);
+                for (ijk[axis] = 0; ijk[axis] < n[axis]; ++ijk[axis])
+                  line[ijk[axis]] = dist[at(ijk[0], ijk[1], ijk[2])];
+                distance_transform_1d(line, h[axis], v, z, d);
+                for (ijk[axis] = 0; ijk[axis] < n[axis]; ++ijk[axis])
+                  dist[at(ijk[0], ijk[1], ijk[2])] = line[ijk[axis]];
+              }
+        }
+      for (double &value : dist)
+        value = std::sqrt(value);
+      return dist;
+    };
+
+    // Morphological closing with a ball of radius `closing`: dilate, then
+    // erode. It bridges sulci and fissures narrower than the ball, as the
+    // inner table of the skull does.
+    if (closing > 0)
+      {
+        const std::vector<double> to_region = distance_to(region);
+        std::vector<bool>         outside(region.size());
+        for (std::size_t v = 0; v < region.size(); ++v)
+          outside[v] = to_region[v] > closing;
+        const std::vector<double> to_outside = distance_to(outside);
+        for (std::size_t v = 0; v < region.size(); ++v)
+          region[v] = region[v] || to_outside[v] > closing;
+      }
+    const std::vector<double> dist = distance_to(region);
+
+    // Distance to the boundary of the labelled region (half a voxel beyond
+    // the centres of its outer voxels) minus the gap, trilinear, in scaled
+    // index space of the unpadded image.
+    const double shift    = 0.5 * h_min + gap;
+    const auto   function = [&](const Point &p) -> double {
+      std::array<double, 3> x{{CGAL::to_double(p.x()) / h[0] + pad,
+                               CGAL::to_double(p.y()) / h[1] + pad,
+                               CGAL::to_double(p.z()) / h[2] + pad}};
+      std::array<unsigned int, 3> i0;
+      std::array<double, 3>       t;
+      for (unsigned int dd = 0; dd < 3; ++dd)
+        {
+          if (!(x[dd] >= 0 && x[dd] <= n[dd] - 1))
+            return gap + pad * h_min;
+          i0[dd] = std::min<unsigned int>(std::floor(x[dd]), n[dd] - 2);
+          t[dd]  = x[dd] - i0[dd];
+        }
+      double value = 0;
+      for (unsigned int corner = 0; corner < 8; ++corner)
+        {
+          double       weight = 1;
+          unsigned int c[3];
+          for (unsigned int dd = 0; dd < 3; ++dd)
+            {
+              const bool upper = (corner >> dd) & 1;
+              c[dd]            = i0[dd] + upper;
+              weight *= upper ? t[dd] : 1 - t[dd];
+            }
+          value += weight * dist[at(c[0], c[1], c[2])];
+        }
+      return value - shift;
+    };
+
+    Kernel::Point_3 lower(-pad * h[0], -pad * h[1], -pad * h[2]);
+    Kernel::Point_3 upper((n[0] - pad - 1) * h[0],
+                          (n[1] - pad - 1) * h[1],
+                          (n[2] - pad - 1) * h[2]);
+    const Kernel::Point_3 centre = CGAL::midpoint(lower, upper);
+    const Domain          domain = Domain::create_implicit_mesh_domain(
+      function,
+      Kernel::Sphere_3(centre, CGAL::squared_distance(lower, centre)),
+      params::relative_error_bound = 1e-6);
+    const Criteria criteria(params::facet_angle = 25,
+                            params::facet_size = facet_size,
+                            params::facet_distance = facet_distance,
+                            params::cell_radius_edge_ratio = 3,
+                            params::cell_size = 4 * facet_size);
+    seed_cgal(0);
+    const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain,
+                                              criteria,
+                                              params::no_perturb(),
+                                              params::no_exude(),
+                                              params::manifold());
+
+    CGAL::Surface_mesh<Point> surface;
+    CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, surface);
+    for (const auto vertex : surface.vertices())
+      {
+        const Point &    p = surface.point(vertex);
+        const auto       x = to_world(p.x(), p.y(), p.z());
+        surface.point(vertex) = Point(x[0], x[1], x[2]);
+      }
+    if (!CGAL::Polygon_mesh_processing::is_outward_oriented(surface))
+      CGAL::Polygon_mesh_processing::reverse_face_orientations(surface);
+
+    namespace fs = std::filesystem;
+    const fs::path target(file);
+    const fs::path tmp = target.parent_path() /
+                         (".tmp-" + std::to_string(::getpid()) + "-" +
+                          target.filename().string());
+    if (!CGAL::IO::write_polygon_mesh(tmp.string(),
+                                      surface,
+                                      params::stream_precision(12)))
+      throw InputError(file,
+                       "--skull-out",
+                       "cannot write the surface; expected a writable "
+                       ".stl, .off or .obj file name");
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec)
+      throw InputError(file, "--skull-out", "cannot rename into place");
+    return surface.number_of_faces();
+  }
+} // namespace RestShape

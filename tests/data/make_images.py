@@ -1,0 +1,36 @@
+#!/usr/bin/env python3
+# Writes the small NIfTI-1 test images of tests/data (no dependencies):
+#   sphere_labels.nii  24^3 voxels of 2 mm, x mirrored by the sform, origin
+#                      shifted: label 1 a ball of radius 18 mm around
+#                      (16, 4, 34) mm, label 2 a ball of radius 8 mm inside it
+#   empty_labels.nii   8^3 voxels, all 0
+import struct
+
+def write(path, n, spacing, srow, values):
+    h = bytearray(348)
+    struct.pack_into('<i', h, 0, 348)
+    struct.pack_into('<8h', h, 40, 3, n, n, n, 1, 1, 1, 1)
+    struct.pack_into('<hh', h, 70, 2, 8)  # uint8
+    struct.pack_into('<8f', h, 76, 1, spacing, spacing, spacing, 1, 1, 1, 1)
+    struct.pack_into('<f', h, 108, 352)
+    struct.pack_into('<f', h, 112, 1)
+    h[123] = 2  # mm
+    struct.pack_into('<hh', h, 252, 0, 2)  # qform 0, sform aligned
+    for r in range(3):
+        struct.pack_into('<4f', h, 280 + 16 * r, *srow[r])
+    h[344:348] = b'n+1\0'
+    with open(path, 'wb') as f:
+        f.write(h + bytes(4) + bytes(values))
+
+n, s = 24, 2.0
+srow = [[-s, 0, 0, 40.0], [0, s, 0, -20.0], [0, 0, s, 10.0]]
+centre = (16.0, 4.0, 34.0)
+values = []
+for k in range(n):
+    for j in range(n):
+        for i in range(n):
+            x = (srow[0][0] * i + srow[0][3], srow[1][1] * j + srow[1][3], srow[2][2] * k + srow[2][3])
+            r = sum((x[d] - centre[d]) ** 2 for d in range(3)) ** 0.5
+            values.append(2 if r <= 8 else 1 if r <= 18 else 0)
+write('tests/data/sphere_labels.nii', n, s, srow, values)
+write('tests/data/empty_labels.nii', 8, 1.0, [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]], [0] * 512)
