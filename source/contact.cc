@@ -176,7 +176,7 @@ namespace RestShape
     releases_frozen = false;
     n_added = n_released = 0;
     n_updates = n_thaws = 0;
-    freeze_at           = 10;
+    freeze_at           = parameters.free_updates;
     for (Candidate &c : candidates)
       {
         const Point<3> x  = position(c, d);
@@ -188,6 +188,9 @@ namespace RestShape
         // on the allowed side and within a cell size of the obstacle now.
         c.eligible = g.gap >= -gap_tolerance;
         c.active   = c.active && c.eligible && g.gap < h_min;
+        c.pulled   = false;
+        c.normal_locked  = false;
+        c.normal_changes = 0;
       }
     share_flags();
   }
@@ -231,14 +234,26 @@ namespace RestShape
         const Point<3> x = position(c, d);
         const Gap      g = obstacle->gap(x);
         c.gap            = g.gap;
-        // Once releases are frozen the active set only grows, and an active
-        // node keeps the normal it had: a node on a sharp ridge of the
-        // obstacle (or where the closest triangle alternates) would
-        // otherwise flip between two normals at every iterate (a 2-cycle
-        // with a constant active set). Its gap keeps being measured, so it
-        // still ends on the surface.
+        // While releases are frozen (the active set only grows) an active
+        // node takes the exact gradient of the gap as its normal, so Newton
+        // converges quadratically while it stays on one face. A node that
+        // keeps changing face (a crease or corner of the triangulated
+        // surface: 2- and 3-cycles were seen on the brain) gets the smoothed
+        // normal after its third change, fixed for the rest of the solve.
+        // Otherwise, and for inactive nodes, the smoothed normal.
         if (!(releases_frozen && c.active))
           c.normal = g.normal;
+        else if (!c.normal_locked)
+          {
+            if ((g.gradient - c.normal).norm() > 1e-6)
+              ++c.normal_changes;
+            c.normal = g.gradient;
+            if (c.normal_changes > 3)
+              {
+                c.normal        = g.normal;
+                c.normal_locked = true;
+              }
+          }
         if (c.owned && !c.eligible &&
             (g.gap >= -gap_tolerance || obstacle->n_crossings(c.previous_position, x) >= 2))
           c.eligible = true;
@@ -255,6 +270,10 @@ namespace RestShape
                              first_iteration ? std::numeric_limits<double>::max() :
                                                contact_force(c, raw_residual) / c.area_lumped;
             now_active = p - c_scaled * (c.gap - gap_tolerance) > 0;
+            // A node released for pulling (thaw_if_adhesive) comes back
+            // only if it goes through the obstacle.
+            if (c.pulled && !c.active)
+              now_active = c.gap < -gap_tolerance;
             if (releases_frozen && c.active)
               now_active = true;
           }
@@ -286,24 +305,40 @@ namespace RestShape
   bool
   ContactProblem::thaw_if_adhesive(const VectorType &raw_residual)
   {
-    if (!releases_frozen || n_thaws >= 3)
+    if (!releases_frozen || n_thaws >= 5)
       return false;
-    const std::vector<double> p = pressures(raw_residual);
-    double                    largest = 0, most_tensile = 0;
+    // Nodal contact forces recovered from the residual scatter around zero
+    // at the rim of a contact zone (P1 especially): a pull below 0.1 % of
+    // the total contact force is accepted; a larger one releases exactly the
+    // pulling nodes (the rest of the set stays, releases stay frozen).
+    const std::vector<double> p    = pressures(raw_residual);
+    double                    push = 0, pull = 0;
+    std::vector<unsigned int> pulling;
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned && candidates[i].active)
         {
-          largest      = std::max(largest, std::abs(p[i]));
-          most_tensile = std::min(most_tensile, p[i]);
+          const double force = p[i] * candidates[i].area_lumped;
+          if (force < 0)
+            {
+              pull -= force;
+              pulling.push_back(i);
+            }
+          else
+            push += force;
         }
     const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
-    largest             = Utilities::MPI::max(largest, comm);
-    most_tensile        = Utilities::MPI::min(most_tensile, comm);
-    if (most_tensile >= -1e-3 * largest)
+    push                = Utilities::MPI::sum(push, comm);
+    pull                = Utilities::MPI::sum(pull, comm);
+    if (pull <= 1e-3 * push)
       return false;
-    releases_frozen = false;
-    history.clear();
-    freeze_at = n_updates + 10;
+    for (const unsigned int i : pulling)
+      {
+        candidates[i].active = false;
+        candidates[i].pulled = true;
+      }
+    share_flags();
+    n_released = Utilities::MPI::sum(static_cast<unsigned int>(pulling.size()), comm);
+    n_added    = 0;
     ++n_thaws;
     return true;
   }

@@ -527,8 +527,8 @@ namespace RestShape
           {
             if (contact == nullptr || !contact->thaw_if_adhesive(residual_raw))
               return true;
-            pcout << "      active nodes pull on the obstacle: releases allowed again"
-                  << std::endl;
+            pcout << "      active nodes pull on the obstacle: released"
+                  << contact->progress_text() << std::endl;
           }
 
         newton_update = 0;

@@ -174,7 +174,12 @@ namespace RestShape
     if (normal.norm() < 1e-12)
       normal = tensor(n_face);
     // Corner normals point out of the enclosed region.
-    result.normal = (inside ? -1. : 1.) * normal / normal.norm();
+    const double to_allowed = inside ? -1. : 1.;
+    result.normal           = to_allowed * normal / normal.norm();
+    const dealii::Tensor<1, 3> face_normal = tensor(n_face) / std::sqrt(area2);
+    result.gradient = distance > 1e-9 * std::sqrt(area2) ?
+                        dealii::Tensor<1, 3>((allowed ? 1. : -1.) * to_point / distance) :
+                        to_allowed * face_normal;
     return result;
   }
 

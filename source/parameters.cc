@@ -435,6 +435,15 @@ namespace RestShape
                       "the primal-dual active set, as a multiple of E_max / h "
                       "(largest Young's modulus over the smallest cell "
                       "diameter), so that c g is a pressure in Pa.");
+    prm.declare_entry("Free active-set updates",
+                      "10",
+                      Patterns::Integer(1),
+                      "Active-set updates per solve in which nodes may be "
+                      "released; afterwards the set only grows (and nodes "
+                      "that pull on the obstacle are released once Newton has "
+                      "converged). Lower it (e.g. 4) for large contact zones "
+                      "on curved obstacles, where the set otherwise wanders "
+                      "(the brain).");
     prm.leave_subsection();
   }
 
@@ -448,6 +457,7 @@ namespace RestShape
     inside           = prm.get("Side") == "inside";
     labels = parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
     active_set_constant = prm.get_double("Active set constant");
+    free_updates        = prm.get_integer("Free active-set updates");
     prm.leave_subsection();
     if (!(active_set_constant > 0))
       throw InputError("", "Contact/Active set constant", "expected a positive number");

@@ -90,10 +90,11 @@ namespace RestShape
 
     /**
      * Called when Newton has converged with releases frozen (cycling, or
-     * more than 10 active-set updates in this solve): if an active node
-     * then pulls on the obstacle (tensile contact pressure), releases are
-     * allowed again and true is returned (Newton goes on); at most three
-     * times per solve.
+     * more than Contact/Free active-set updates in this solve): if the
+     * active nodes that pull on the obstacle (tensile contact force) carry
+     * more than 0.1 % of the total contact force, exactly those are released
+     * (they come back only if they go through the obstacle) and true is
+     * returned (Newton goes on); at most five times per solve.
      */
     bool
     thaw_if_adhesive(const VectorType &raw_residual);
@@ -147,6 +148,9 @@ namespace RestShape
       double               area_lumped = 0; // HRZ over all its boundary faces, m^2
       bool                 eligible        = false;
       bool                 active          = false;
+      bool                 pulled          = false; // released by thaw_if_adhesive()
+      bool                 normal_locked   = false; // crease node: normal fixed
+      unsigned int         normal_changes  = 0;     // face changes while frozen
       double               gap             = 0;
       dealii::Tensor<1, 3> normal;
       dealii::Point<3>     previous_position;

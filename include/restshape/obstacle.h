@@ -14,7 +14,9 @@ namespace RestShape
   struct Gap
   {
     double               gap;    // > 0 on the allowed side, < 0 beyond (m)
-    dealii::Tensor<1, 3> normal; // unit gradient of the gap: towards the allowed side
+    dealii::Tensor<1, 3> normal;   // smoothed (Phong) normal, towards the allowed side
+    dealii::Tensor<1, 3> gradient; // exact gradient of the gap (closest face's normal
+                                   // on the surface), towards the allowed side
   };
 
   class Obstacle

@@ -159,6 +159,7 @@ namespace RestShape
     bool            inside; // allowed region: inside the closed surface
     std::set<Label> labels; // empty: all
     double          active_set_constant;
+    unsigned int    free_updates = 10;
 
     bool
     enabled() const
