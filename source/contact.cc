@@ -15,7 +15,9 @@ namespace RestShape
   ContactProblem::ContactProblem(const ContactParameters &parameters,
                                  const ForwardProblem &   forward,
                                  TimerOutput &            timer)
-    : gap_tolerance(1e-10 * forward.mesh().diameter())
+    // Gaps are resolved as tightly as the residual (relative to the body's
+    // size), but never tighter than 1e-10 of it.
+    : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) * forward.mesh().diameter())
     , parameters(parameters)
     , forward(forward)
     , timer(timer)

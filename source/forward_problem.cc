@@ -332,9 +332,10 @@ namespace RestShape
     const Label            label = cell->material_id();
     const CorotationalLaw &law   = material_table.law(label);
     // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
-    // shape.
+    // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
     const Tensor<1, 3> body_force =
-      material_table.density(label) * current_load.acceleration;
+      (material_table.density(label) - parameters.loads.fluid_density) *
+      current_load.acceleration;
     const Tensor2 I = unit_symmetric_tensor<3>();
 
     Tensor2 P;
@@ -853,8 +854,9 @@ namespace RestShape
           double volume = 0;
           for (const unsigned int q : fv.quadrature_point_indices())
             volume += fv.JxW(q);
-          force += material_table.density(cell->material_id()) * volume *
-                   load.acceleration;
+          force += (material_table.density(cell->material_id()) -
+                    parameters.loads.fluid_density) *
+                   volume * load.acceleration;
           if (load.pressure != 0 && pressure_labels.count(cell->material_id()))
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary())

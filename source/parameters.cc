@@ -232,6 +232,15 @@ namespace RestShape
                       Patterns::Anything(),
                       "Gravitational acceleration in m/s^2, 'x, y, z' in the "
                       "mesh's coordinate frame.");
+    prm.declare_entry("Fluid density",
+                      "0",
+                      Patterns::Anything(),
+                      "Density in kg/m^3 of a fluid the body is immersed in "
+                      "(CSF: about 1007). Every body force acts on the "
+                      "density minus this (Archimedes: the resultant of the "
+                      "fluid's hydrostatic pressure on an immersed body), so "
+                      "a brain of 1040 kg/m^3 in CSF weighs 3.2 % of its "
+                      "weight. 0: no fluid.");
     prm.declare_entry("Surface pressure",
                       "0",
                       Patterns::Double(),
@@ -253,6 +262,22 @@ namespace RestShape
     prm.enter_subsection("Loads");
     gravity  = parse_vector(prm.get("Gravity"), "Loads/Gravity");
     pressure = prm.get_double("Surface pressure");
+    {
+      const std::string text = dealii::Utilities::trim(prm.get("Fluid density"));
+      std::size_t       used = 0;
+      bool              ok   = !text.empty();
+      try
+        {
+          fluid_density = ok ? std::stod(text, &used) : 0.;
+        }
+      catch (const std::exception &)
+        {
+          ok = false;
+        }
+      if (!ok || used != text.size() || !(fluid_density >= 0) || !std::isfinite(fluid_density))
+        throw InputError("", "Loads/Fluid density",
+                         "'" + text + "': expected a density >= 0 in kg/m^3");
+    }
     pressure_labels =
       parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
     prm.leave_subsection();

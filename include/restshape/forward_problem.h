@@ -61,6 +61,13 @@ namespace RestShape
   class ForwardProblem
   {
   public:
+    /// Relative residual at which Newton stops (Solver/Newton tolerance).
+    double
+    newton_tolerance() const
+    {
+      return parameters.solver.newton_tolerance;
+    }
+
     ForwardProblem(const Parameters &           parameters,
                    LabelledMesh &               mesh,
                    const MaterialTable &        materials,

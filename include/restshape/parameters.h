@@ -91,6 +91,7 @@ namespace RestShape
   {
     dealii::Tensor<1, 3> gravity;  // m/s^2
     double               pressure; // Pa, positive pushes inward
+    double               fluid_density = 0; // kg/m^3 of an immersing fluid (buoyancy)
     std::set<Label>      pressure_labels; // empty: all unfixed labels
 
     static void
