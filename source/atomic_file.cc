@@ -43,6 +43,30 @@ namespace RestShape
   }
 
   void
+  write_named_file_atomically(const std::string &                              path,
+                              const std::function<bool(const std::string &)> &write,
+                              const std::string &                              parameter,
+                              const std::string &                              message)
+  {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    const fs::path tmp =
+      target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
+    std::error_code ec;
+    if (!write(tmp.string()) || !fs::exists(tmp, ec))
+      {
+        fs::remove(tmp, ec);
+        throw InputError(path, parameter, message);
+      }
+    fs::rename(tmp, target, ec);
+    if (ec)
+      {
+        fs::remove(tmp, ec);
+        throw InputError(path, parameter, "cannot rename into place: " + ec.message());
+      }
+  }
+
+  void
   ensure_writable_directory(const std::string &directory,
                             const std::string &parameter)
   {

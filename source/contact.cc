@@ -178,7 +178,6 @@ namespace RestShape
     releases_frozen = false;
     n_added = n_released = 0;
     n_updates = n_thaws = 0;
-    freeze_at           = parameters.free_updates;
     for (Candidate &c : candidates)
       {
         const Point<3> x  = position(c, d);
@@ -295,10 +294,10 @@ namespace RestShape
     if (changed && history.count(hash) && !releases_frozen)
       releases_frozen = true;
     // A soft body pivoting against a curved obstacle can wander through
-    // many active sets without repeating one: after freeze_at updates the
+    // many active sets without repeating one: after Free active-set updates the
     // set only grows, which ends in a converged state; thaw_if_adhesive()
     // then releases nodes that pull.
-    if (++n_updates >= freeze_at)
+    if (++n_updates >= parameters.free_updates)
       releases_frozen = true;
     history.insert(hash);
     return changed;

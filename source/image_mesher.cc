@@ -1,3 +1,4 @@
+#include <restshape/atomic_file.h>
 #include <restshape/image_mesher.h>
 #include <restshape/input_error.h>
 
@@ -13,12 +14,10 @@
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 #include <CGAL/make_mesh_3.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <limits>
 #include <map>
 
@@ -177,6 +176,7 @@ namespace RestShape
         q.min_volume = (q.total_volume == 0 ? six_volume / 6 :
                                               std::min(q.min_volume, six_volume / 6));
         q.total_volume += six_volume / 6;
+        q.volume_per_label[cell.material_id] += six_volume / 6;
 
         // Circumradius over shortest edge.
         const Tensor<1, 3> centre =
@@ -361,22 +361,13 @@ namespace RestShape
     if (!CGAL::Polygon_mesh_processing::is_outward_oriented(surface))
       CGAL::Polygon_mesh_processing::reverse_face_orientations(surface);
 
-    namespace fs = std::filesystem;
-    const fs::path target(file);
-    const fs::path tmp = target.parent_path() /
-                         (".tmp-" + std::to_string(::getpid()) + "-" +
-                          target.filename().string());
-    if (!CGAL::IO::write_polygon_mesh(tmp.string(),
-                                      surface,
-                                      params::stream_precision(12)))
-      throw InputError(file,
-                       "--skull-out",
-                       "cannot write the surface; expected a writable "
-                       ".stl, .off or .obj file name");
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec)
-      throw InputError(file, "--skull-out", "cannot rename into place");
+    write_named_file_atomically(
+      file,
+      [&](const std::string &tmp) {
+        return CGAL::IO::write_polygon_mesh(tmp, surface, params::stream_precision(12));
+      },
+      "--skull-out",
+      "cannot write the surface; expected a writable .stl, .off or .obj file name");
     return surface.number_of_faces();
   }
 } // namespace RestShape

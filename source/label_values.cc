@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <restshape/command_line.h>
 #include <restshape/input_error.h>
 #include <restshape/label_values.h>
 
@@ -42,27 +43,6 @@ namespace RestShape
                            "integer (a physical volume tag of the mesh)");
       return static_cast<Label>(value);
     }
-
-    double
-    parse_number(const std::string &text, const std::string &parameter)
-    {
-      const std::string t   = dealii::Utilities::trim(text);
-      std::size_t       pos = 0;
-      double            value = 0;
-      try
-        {
-          value = std::stod(t, &pos);
-        }
-      catch (...)
-        {
-          pos = 0;
-        }
-      if (pos != t.size() || t.empty() || !std::isfinite(value))
-        throw InputError("",
-                         parameter,
-                         "'" + t + "' is not a finite number");
-      return value;
-    }
   } // namespace
 
   LabelValues
@@ -87,7 +67,7 @@ namespace RestShape
                                "'" + item +
                                  "' has no label; in a list every entry "
                                  "must be 'label:value'");
-            result.value_for_all = parse_number(item, parameter);
+            result.value_for_all = parse_number(parameter, item);
           }
         else
           {
@@ -99,7 +79,7 @@ namespace RestShape
                                "label " + std::to_string(label) +
                                  " is given twice");
             result.per_label[label] =
-              parse_number(item.substr(colon + 1), parameter);
+              parse_number(parameter, item.substr(colon + 1));
           }
       }
     return result;

@@ -1,3 +1,4 @@
+#include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/labelled_image.h>
 
@@ -176,12 +177,6 @@ namespace RestShape
                        const std::string &  file,
                        const std::string &  parameter)
   {
-    namespace fs = std::filesystem;
-    const fs::path target(file);
-    const fs::path tmp = target.parent_path() /
-                         (".tmp-" + std::to_string(::getpid()) + "-" +
-                          target.filename().string());
-
     const int64_t dims[8] = {3, image.size[0], image.size[1], image.size[2],
                              1, 1,             1,             1};
     nifti_set_debug_level(0);
@@ -204,20 +199,19 @@ namespace RestShape
           r == 3 ? (c == 3 ? 1. : 0.) :
                    (c == 3 ? image.offset[r] : image.index_to_mm[r][c]);
     nim->sto_ijk = nifti_dmat44_inverse(nim->sto_xyz);
-    if (nifti_set_filenames(nim.get(), tmp.c_str(), 0, 1) != 0)
-      throw InputError(file,
-                       parameter,
-                       "unsupported file name; expected a name ending in "
-                       ".nii or .nii.gz");
-    nifti_image_write(nim.get());
-    std::error_code ec;
-    if (!fs::exists(tmp, ec))
-      throw InputError(file, parameter, "cannot write the image");
-    fs::rename(tmp, target, ec);
-    if (ec)
-      {
-        fs::remove(tmp, ec);
-        throw InputError(file, parameter, "cannot rename into place");
-      }
+    const std::string name = file;
+    if (!(name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0) &&
+        !(name.size() > 7 && name.compare(name.size() - 7, 7, ".nii.gz") == 0))
+      throw InputError(file, parameter, "unsupported file name; expected a name ending in .nii or .nii.gz");
+    write_named_file_atomically(
+      file,
+      [&](const std::string &tmp) {
+        if (nifti_set_filenames(nim.get(), tmp.c_str(), 0, 1) != 0)
+          return false;
+        nifti_image_write(nim.get());
+        return true;
+      },
+      parameter,
+      "cannot write the image; expected a writable location");
   }
 } // namespace RestShape

@@ -234,7 +234,7 @@ namespace RestShape
                       "mesh's coordinate frame.");
     prm.declare_entry("Fluid density",
                       "0",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Density in kg/m^3 of a fluid the body is immersed in "
                       "(CSF: about 1007). Every body force acts on the "
                       "density minus this (Archimedes: the resultant of the "
@@ -262,22 +262,10 @@ namespace RestShape
     prm.enter_subsection("Loads");
     gravity  = parse_vector(prm.get("Gravity"), "Loads/Gravity");
     pressure = prm.get_double("Surface pressure");
-    {
-      const std::string text = dealii::Utilities::trim(prm.get("Fluid density"));
-      std::size_t       used = 0;
-      bool              ok   = !text.empty();
-      try
-        {
-          fluid_density = ok ? std::stod(text, &used) : 0.;
-        }
-      catch (const std::exception &)
-        {
-          ok = false;
-        }
-      if (!ok || used != text.size() || !(fluid_density >= 0) || !std::isfinite(fluid_density))
-        throw InputError("", "Loads/Fluid density",
-                         "'" + text + "': expected a density >= 0 in kg/m^3");
-    }
+    fluid_density = prm.get_double("Fluid density");
+    if (!(fluid_density >= 0))
+      throw InputError("", "Loads/Fluid density",
+                       "'" + prm.get("Fluid density") + "': expected a density >= 0 in kg/m^3");
     pressure_labels =
       parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
     prm.leave_subsection();

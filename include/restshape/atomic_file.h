@@ -21,6 +21,19 @@ namespace RestShape
                         const std::string &parameter = "Output/Directory");
 
   /**
+   * The same for writers that need a file name whose extension tells the
+   * format (libnifti, CGAL's readers and writers): @p write writes to the
+   * temporary name "<dir>/.tmp-<pid>-<name>" it is given and returns false
+   * on failure, with @p message used for the error. The file is then
+   * renamed to @p path.
+   */
+  void
+  write_named_file_atomically(const std::string &                              path,
+                              const std::function<bool(const std::string &)> &write,
+                              const std::string &                              parameter,
+                              const std::string &                              message);
+
+  /**
    * Create @p directory (and parents) if needed and check that files can be
    * created in it. Throws InputError naming @p parameter otherwise.
    */

@@ -185,7 +185,7 @@ namespace RestShape
     std::set<std::size_t>           history;
     double                          h_min = 0;
     bool                            releases_frozen = false;
-    unsigned int                    n_updates = 0, freeze_at = 10, n_thaws = 0;
+    unsigned int                    n_updates = 0, n_thaws = 0;
     unsigned int                    n_added = 0, n_released = 0;
   };
 } // namespace RestShape

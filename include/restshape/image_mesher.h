@@ -7,6 +7,7 @@
 #include <restshape/labelled_image.h>
 #include <restshape/mesh.h>
 
+#include <map>
 #include <string>
 
 namespace RestShape
@@ -42,6 +43,7 @@ namespace RestShape
     unsigned int n_below_10_deg      = 0; // cells with a dihedral angle < 10 degrees
     double       min_volume          = 0; // in the mesh's length unit cubed
     double       total_volume        = 0;
+    std::map<unsigned int, double> volume_per_label;
   };
 
   /// Dihedral angles, circumradius-to-shortest-edge ratios and volumes.

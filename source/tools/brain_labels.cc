@@ -17,10 +17,9 @@
 //  - tumour: the brain voxels within --tumour-radius mm of --tumour (MNI mm);
 //  - finally every label keeps only its largest connected piece; the other
 //    pieces are given to their neighbours, so that each region is one solid.
+#include <restshape/command_line.h>
 #include <restshape/input_error.h>
 #include <restshape/labelled_image.h>
-
-#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <deque>
@@ -109,14 +108,6 @@ namespace
       }
   }
 
-  std::array<double, 3>
-  triple(const std::string &option, const std::string &text)
-  {
-    const auto items = dealii::Utilities::split_string_list(text, ',');
-    if (items.size() != 3)
-      throw InputError("", option, "expected three comma-separated numbers (mm), got '" + text + "'");
-    return {{std::stod(items[0]), std::stod(items[1]), std::stod(items[2])}};
-  }
 } // namespace
 
 int
@@ -140,11 +131,11 @@ main(int argc, char **argv)
           else if (arg == "--out")
             out = value;
           else if (arg == "--tumour")
-            centre = triple(arg, value);
+            centre = parse_triple(arg, value);
           else if (arg == "--tumour-radius")
-            radius = std::stod(value);
+            radius = parse_positive(arg, value);
           else if (arg == "--brainstem-half-width")
-            half_width = std::stod(value);
+            half_width = parse_positive(arg, value);
           else
             throw InputError("", arg, "unknown option");
         }

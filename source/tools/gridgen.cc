@@ -22,6 +22,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <restshape/generated_meshes.h>
+#include <restshape/command_line.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
 
@@ -41,14 +42,6 @@ namespace
     Label        label;
   };
 
-  std::array<double, 3>
-  parse_triple(const std::string &text, const std::string &option)
-  {
-    const auto items = Utilities::split_string_list(text, ',');
-    if (items.size() != 3)
-      throw InputError("", option, "expected three comma-separated numbers");
-    return {{std::stod(items[0]), std::stod(items[1]), std::stod(items[2])}};
-  }
 } // namespace
 
 int
@@ -72,12 +65,12 @@ main(int argc, char **argv)
             throw InputError("", arg, "missing value");
           const std::string value = argv[++i];
           if (arg == "--size")
-            size = parse_triple(value, arg);
+            size = parse_triple(arg, value);
           else if (arg == "--origin")
-            origin = parse_triple(value, arg);
+            origin = parse_triple(arg, value);
           else if (arg == "--subdivisions")
             {
-              const auto t = parse_triple(value, arg);
+              const auto t = parse_triple(arg, value);
               for (unsigned int d = 0; d < 3; ++d)
                 n[d] = static_cast<unsigned int>(t[d]);
             }

@@ -16,6 +16,7 @@
 #include <deal.II/base/timer.h>
 
 #include <restshape/atomic_file.h>
+#include <restshape/command_line.h>
 #include <restshape/image_mesher.h>
 #include <restshape/input_error.h>
 #include <restshape/labelled_image.h>
@@ -32,25 +33,6 @@ using namespace RestShape;
 
 namespace
 {
-  double
-  positive_length(const std::string &option, const std::string &value)
-  {
-    std::size_t used  = 0;
-    double      x     = 0;
-    bool        valid = true;
-    try
-      {
-        x = std::stod(value, &used);
-      }
-    catch (const std::exception &)
-      {
-        valid = false;
-      }
-    if (!valid || used != value.size() || !(x > 0) || !std::isfinite(x))
-      throw InputError("", option, "expected a positive number, got '" + value + "'");
-    return x;
-  }
-
   /// The nodes on the boundary of a tetrahedral mesh (faces of one cell).
   std::set<unsigned int>
   boundary_nodes(const MeshDescription &mesh)
@@ -96,24 +78,24 @@ main(int argc, char **argv)
           else if (arg == "--skull-out")
             skull_out = value;
           else if (arg == "--cell-size")
-            options.cell_size = positive_length(arg, value);
+            options.cell_size = parse_positive(arg, value);
           else if (arg == "--facet-size")
             {
-              options.facet_size = positive_length(arg, value);
+              options.facet_size = parse_positive(arg, value);
               facet_size_given   = true;
             }
           else if (arg == "--facet-distance")
-            options.facet_distance = positive_length(arg, value);
+            options.facet_distance = parse_positive(arg, value);
           else if (arg == "--sliver-bound")
-            options.sliver_bound = positive_length(arg, value);
+            options.sliver_bound = parse_positive(arg, value);
           else if (arg == "--seed")
-            options.seed = static_cast<unsigned int>(positive_length(arg, value));
+            options.seed = static_cast<unsigned int>(parse_positive(arg, value));
           else if (arg == "--skull-gap")
-            skull_gap = positive_length(arg, value);
+            skull_gap = parse_positive(arg, value);
           else if (arg == "--skull-closing")
-            skull_closing = value == "0" ? 0. : positive_length(arg, value);
+            skull_closing = value == "0" ? 0. : parse_positive(arg, value);
           else if (arg == "--skull-facet-size")
-            skull_facet_size = positive_length(arg, value);
+            skull_facet_size = parse_positive(arg, value);
           else
             throw InputError("",
                              arg,
@@ -162,28 +144,21 @@ main(int argc, char **argv)
                 << " mm): " << mesh.vertices.size() << " nodes, " << mesh.cells.size()
                 << " tetrahedra in " << timer.wall_time() << " s" << std::endl;
 
-      std::map<unsigned int, std::pair<unsigned int, double>> per_label;
-      MeshDescription                                         one;
-      one.vertices = mesh.vertices;
+      const MeshQuality                   q = mesh_quality(mesh);
+      std::map<unsigned int, unsigned int> n_per_label;
       for (const auto &cell : mesh.cells)
-        {
-          one.cells.assign(1, cell);
-          auto &entry = per_label[cell.material_id];
-          ++entry.first;
-          entry.second += mesh_quality(one).total_volume;
-        }
+        ++n_per_label[cell.material_id];
       for (const auto &[label, count] : image.label_counts())
         {
-          const auto it = per_label.find(label);
-          std::cout << "  label " << label << ": "
-                    << (it == per_label.end() ? 0 : it->second.first) << " tetrahedra, "
-                    << (it == per_label.end() ? 0. : it->second.second / 1000) << " cm^3 (image "
-                    << count * h[0] * h[1] * h[2] / 1000 << " cm^3)" << std::endl;
-          if (it == per_label.end())
+          const auto volume = q.volume_per_label.find(label);
+          std::cout << "  label " << label << ": " << n_per_label[label] << " tetrahedra, "
+                    << (volume == q.volume_per_label.end() ? 0. : volume->second / 1000)
+                    << " cm^3 (image " << count * h[0] * h[1] * h[2] / 1000 << " cm^3)"
+                    << std::endl;
+          if (n_per_label[label] == 0)
             std::cout << "  warning: label " << label
                       << " has no tetrahedron; reduce --cell-size to resolve it" << std::endl;
         }
-      const MeshQuality q = mesh_quality(mesh);
       std::cout << "quality: dihedral angles " << q.min_dihedral_deg << " to "
                 << q.max_dihedral_deg << " deg (" << q.n_below_10_deg
                 << " cells below 10 deg), radius-edge ratio mean " << q.mean_radius_edge

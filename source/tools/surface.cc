@@ -8,6 +8,7 @@
 // FILE: .off, .stl or .obj. --flip reverses every face (an inward-oriented
 // surface), --open deletes one face (a surface with a hole): both make
 // invalid obstacles, for the error tests.
+#include <restshape/command_line.h>
 #include <deal.II/base/utilities.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -22,20 +23,14 @@
 #include <iostream>
 #include <string>
 
+using namespace RestShape;
+
 namespace
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Point  = Kernel::Point_3;
   using Mesh   = CGAL::Surface_mesh<Point>;
 
-  std::array<double, 3>
-  triple(const std::string &text)
-  {
-    const auto items = dealii::Utilities::split_string_list(text, ',');
-    if (items.size() != 3)
-      throw std::runtime_error("expected three comma-separated numbers, got '" + text + "'");
-    return {{std::stod(items[0]), std::stod(items[1]), std::stod(items[2])}};
-  }
 } // namespace
 
 int
@@ -60,12 +55,12 @@ main(int argc, char **argv)
           else if (arg == "--box" || arg == "--sphere")
             {
               shape = arg.substr(2);
-              a     = triple(argv[++i]);
+              a     = parse_triple(arg, argv[++i]);
             }
           else if (arg == "--size")
-            size = triple(argv[++i]);
+            size = parse_triple(arg, argv[++i]);
           else if (arg == "--radius")
-            radius = std::stod(argv[++i]);
+            radius = parse_positive(arg, argv[++i]);
           else if (arg == "--subdivisions")
             subdivisions = std::stoi(argv[++i]);
           else if (arg == "--out")
