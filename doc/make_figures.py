@@ -17,59 +17,66 @@ import os
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
+import numpy
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy, numpy_to_vtk
 
 
-def last_vtu(directory):
-    files = sorted(glob.glob(os.path.join(directory, 'solution-*.vtu')))
-    if not files:
-        raise SystemExit('no solution-*.vtu in ' + directory + ': run the scene first')
+def read_vtu(file):
     reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(files[-1])
+    reader.SetFileName(file)
     reader.Update()
     return reader.GetOutput()
 
 
-def surface_at(grid, positions):
+def vtus(directory):
+    files = sorted(glob.glob(os.path.join(directory, 'solution-*.vtu')))
+    if not files:
+        raise SystemExit('no solution-*.vtu in ' + directory + ': run the scene first')
+    return files
+
+
+def surface_at(grid, positions, scalars=None, values=None):
+    """The outer surface of grid, its points moved to the point field
+    `positions` (mm), with the point field `values` as `scalars`."""
     copy = vtk.vtkUnstructuredGrid()
     copy.DeepCopy(grid)
     points = vtk.vtkPoints()
     points.SetData(numpy_to_vtk(vtk_to_numpy(grid.GetPointData().GetArray(positions)).copy(), deep=1))
     copy.SetPoints(points)
+    if scalars is not None:
+        array = numpy_to_vtk(values.copy(), deep=1)
+        array.SetName(scalars)
+        copy.GetPointData().AddArray(array)
     surface = vtk.vtkDataSetSurfaceFilter()
     surface.SetInputData(copy)
     surface.Update()
     return surface.GetOutput()
 
 
-def render(actors, file, view_up=(0, 0, 1), direction=(1, 0, 0), bar=None, size=(900, 700)):
-    renderer = vtk.vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    for a in actors:
-        renderer.AddActor(a)
-    if bar is not None:
-        renderer.AddActor2D(bar)
-    window = vtk.vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    window.SetSize(*size)
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(*[-500 * d for d in direction])
-    camera.SetViewUp(*view_up)
-    renderer.ResetCamera()
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(file)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+def magnitude(grid, a, b=None):
+    """|a - b| of two point fields (|a| if b is None)."""
+    va = vtk_to_numpy(grid.GetPointData().GetArray(a))
+    vb = 0 if b is None else vtk_to_numpy(grid.GetPointData().GetArray(b))
+    return numpy.linalg.norm(va - vb, axis=1)
 
 
-def actor(poly, color=None, opacity=1.0, scalars=None, lut=None, wire=False):
+def colour_map(maximum, title):
+    lut = vtk.vtkLookupTable()
+    lut.SetRange(0, maximum)
+    lut.SetHueRange(0.15, 0.67)
+    lut.Build()
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(lut)
+    bar.SetTitle(title)
+    bar.SetMaximumWidthInPixels(70)
+    bar.GetTitleTextProperty().SetColor(0, 0, 0)
+    bar.GetLabelTextProperty().SetColor(0, 0, 0)
+    bar.SetNumberOfLabels(4)
+    return lut, bar
+
+
+def actor(poly, scalars=None, lut=None):
     mapper = vtk.vtkPolyDataMapper()
     mapper.SetInputData(poly)
     if scalars:
@@ -82,38 +89,73 @@ def actor(poly, color=None, opacity=1.0, scalars=None, lut=None, wire=False):
         mapper.ScalarVisibilityOff()
     a = vtk.vtkActor()
     a.SetMapper(mapper)
-    if color:
-        a.GetProperty().SetColor(*color)
-    a.GetProperty().SetOpacity(opacity)
-    if wire:
-        a.GetProperty().SetRepresentationToWireframe()
+    if not scalars:
+        a.GetProperty().SetColor(0.8, 0.8, 0.8)
     return a
 
 
-def shapes_and_error(directory, tag):
-    grid = last_vtu(directory)
-    target = surface_at(grid, 'target_position_mm')
-    rest = surface_at(grid, 'rest_position_mm')
-    equilibrium = surface_at(grid, 'equilibrium_position_mm')
-    # Lateral view from the left (camera at -x looking to +x), superior up.
-    render([actor(rest, (0.2, 0.35, 0.9), 0.35), actor(target, (0.85, 0.15, 0.1), wire=True),
-            actor(equilibrium, (0.6, 0.6, 0.6), 0.5)],
-           'doc/figures/brain_shapes%s.png' % tag, direction=(1, 0, 0))
-    errors = vtk_to_numpy(grid.GetPointData().GetArray('error_magnitude_mm'))
-    lut = vtk.vtkLookupTable()
-    lut.SetRange(0, float(errors.max()))
-    lut.SetHueRange(0.15, 0.67)
-    lut.Build()
-    bar = vtk.vtkScalarBarActor()
-    bar.SetLookupTable(lut)
-    bar.SetTitle('error (mm)')
-    bar.GetTitleTextProperty().SetColor(0, 0, 0)
-    bar.GetLabelTextProperty().SetColor(0, 0, 0)
-    bar.SetNumberOfLabels(5)
-    render([actor(equilibrium, scalars='error_magnitude_mm', lut=lut)],
-           'doc/figures/brain_error%s_left.png' % tag, direction=(1, 0, 0), bar=bar)
-    render([actor(equilibrium, scalars='error_magnitude_mm', lut=lut)],
-           'doc/figures/brain_error%s_below.png' % tag, direction=(0, 0, 1), view_up=(0, 1, 0), bar=bar)
+def render_panels(panels, file, direction=(1, 0, 0), view_up=(0, 0, 1), size=(1500, 520)):
+    """panels: (title, polydata, scalars or None, maximum); one viewport each,
+    lateral view from the left (camera at -x), superior up."""
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(*size)
+    for i, (title, poly, scalars, maximum) in enumerate(panels):
+        renderer = vtk.vtkRenderer()
+        renderer.SetViewport(i / len(panels), 0, (i + 1) / len(panels), 1)
+        renderer.SetBackground(1, 1, 1)
+        lut, bar = colour_map(maximum, 'mm') if scalars else (None, None)
+        renderer.AddActor(actor(poly, scalars, lut))
+        if bar is not None:
+            renderer.AddActor2D(bar)
+        text = vtk.vtkTextActor()
+        text.SetInput(title)
+        text.GetTextProperty().SetColor(0, 0, 0)
+        text.GetTextProperty().SetFontSize(16)
+        text.SetPosition(10, size[1] - 30)
+        renderer.AddActor2D(text)
+        camera = renderer.GetActiveCamera()
+        camera.SetFocalPoint(0, 0, 0)
+        camera.SetPosition(*[-500 * d for d in direction])
+        camera.SetViewUp(*view_up)
+        renderer.ResetCamera()
+        camera.Zoom(1.3)
+        window.AddRenderer(renderer)
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(file)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+
+
+def shapes(directory):
+    grid = read_vtu(vtus(directory)[-1])
+    correction = magnitude(grid, 'rest_position_mm', 'target_position_mm')
+    sag = magnitude(grid, 'equilibrium_position_mm', 'rest_position_mm')
+    render_panels([('target (image)', surface_at(grid, 'target_position_mm'), None, 0),
+                   ('rest shape: |X_rest - X_target|',
+                    surface_at(grid, 'rest_position_mm', 'c', correction), 'c', correction.max()),
+                   ('equilibrium: |x - X_rest|',
+                    surface_at(grid, 'equilibrium_position_mm', 's', sag), 's', sag.max())],
+                  'doc/figures/brain_shapes.png')
+
+
+def errors(ours, paper):
+    first = read_vtu(vtus(ours)[0])
+    last_paper = read_vtu(vtus(paper)[-1])
+    last = read_vtu(vtus(ours)[-1])
+    panels = []
+    for title, grid in (('iteration 0 (no rest shape)', first),
+                        ("paper's method, last iterate", last_paper),
+                        ('RestShape, converged', last)):
+        e = magnitude(grid, 'error_mm')
+        panels.append(('%s: max %.3g mm' % (title, e.max()),
+                       surface_at(grid, 'equilibrium_position_mm', 'e', e), 'e', e.max()))
+    render_panels(panels, 'doc/figures/brain_error_left.png')
+    render_panels(panels, 'doc/figures/brain_error_below.png', direction=(0, 0, 1), view_up=(0, 1, 0))
 
 
 def read_iterations(directory):
@@ -124,7 +166,8 @@ def read_iterations(directory):
 
 
 os.makedirs('doc/figures', exist_ok=True)
-shapes_and_error('output/brain', '')
+shapes('output/brain')
+errors('output/brain', 'output/brain_paper_method')
 plt.figure(figsize=(6.5, 4))
 for directory, label, style in (('output/brain', 'RestShape (Anderson, consistent, P1)', '-o'),
                                 ('output/brain_paper_method', "paper's method (plain, warped, P1)", '--s')):
@@ -133,7 +176,7 @@ for directory, label, style in (('output/brain', 'RestShape (Anderson, consisten
         plt.semilogy(it, mean, style, label=label + ': mean')
         plt.semilogy(it, maximum, style, alpha=0.5, label=label + ': max')
 plt.axhline(0.746, color='gray', lw=0.8, ls=':')
-plt.text(0, 0.8, 'paper: mean 0.746 mm after 6 iterations', fontsize=8, color='gray')
+plt.text(3, 0.8, 'paper: mean 0.746 mm after 6 iterations', fontsize=8, color='gray')
 plt.xlabel('inverse iteration')
 plt.ylabel('|X_target - X_equilibrium| (mm)')
 plt.legend(fontsize=7)

@@ -59,6 +59,8 @@ namespace RestShape
                          update_JxW_values)
       , grad_d(quadrature.size())
       , grad_w(quadrature.size())
+      , face_d(face_quadrature.size())
+      , face_w(face_quadrature.size())
       , b(fe.n_dofs_per_cell())
       , v(fe.n_dofs_per_cell())
     {}
@@ -73,6 +75,7 @@ namespace RestShape
     FEValues<3>              fe_values;
     FEFaceValues<3>          fe_face_values;
     std::vector<Tensor2>     grad_d, grad_w;
+    std::vector<Tensor<1, 3>> face_d, face_w;
     std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
     std::vector<Tensor2>     v;  // A : (e_c (x) b_j), per shape function j
   };
@@ -171,19 +174,25 @@ namespace RestShape
     w_ghost.reinit(owned_dofs, relevant_dofs, comm);
     current_load = LoadState();
 
-    // Pressure faces: the given labels, or every label not fully fixed.
-    pressure_labels = parameters.loads.pressure_labels;
-    if (pressure_labels.empty())
-      for (const Label label : labelled_mesh.labels())
-        {
-          bool fully_fixed = false;
-          for (const auto &f : parameters.boundary.fixed_labels)
-            if (f.label == label && f.components[0] && f.components[1] &&
-                f.components[2])
-              fully_fixed = true;
-          if (!fully_fixed)
-            pressure_labels.insert(label);
-        }
+    // Pressure and elastic-support faces: the given labels, or every label
+    // not fully fixed.
+    const auto labels_or_unfixed = [this](const std::set<Label> &given) {
+      std::set<Label> result = given;
+      if (result.empty())
+        for (const Label label : labelled_mesh.labels())
+          {
+            bool fully_fixed = false;
+            for (const auto &f : parameters.boundary.fixed_labels)
+              if (f.label == label && f.components[0] && f.components[1] &&
+                  f.components[2])
+                fully_fixed = true;
+            if (!fully_fixed)
+              result.insert(label);
+          }
+      return result;
+    };
+    pressure_labels = labels_or_unfixed(parameters.loads.pressure_labels);
+    support_labels  = labels_or_unfixed(parameters.boundary.support_labels);
 
     linear_solver = std::make_unique<LinearSolver>(
       parameters.solver, parameters.discretization.degree);
@@ -418,6 +427,35 @@ namespace RestShape
                       fv.JxW(q);
                     copy.cell_external(i) += f_ext;
                     copy.cell_rhs(i) += f_ext;
+                  }
+              }
+          }
+
+    // Elastic support: traction -k (d - w) on the outer faces (mesh
+    // geometry), energy k/2 |d - w|^2.
+    const double k = parameters.boundary.support_stiffness;
+    if (k > 0 && support_labels.count(label))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            FEFaceValues<3> &fv = scratch.fe_face_values;
+            fv.reinit(cell, f);
+            fv[u].get_function_values(d_ghost, scratch.face_d);
+            fv[u].get_function_values(w_ghost, scratch.face_w);
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                const Tensor<1, 3> u_rest = scratch.face_d[q] - scratch.face_w[q];
+                const double       JxW    = fv.JxW(q);
+                copy.energy += 0.5 * k * u_rest.norm_square() * JxW;
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    const unsigned int ci  = fe_.system_to_component_index(i).first;
+                    const double       phi = fv.shape_value(i, q);
+                    copy.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
+                    if (matrix)
+                      for (unsigned int j = 0; j < n_dofs; ++j)
+                        if (fe_.system_to_component_index(j).first == ci)
+                          copy.cell_matrix(i, j) += k * phi * fv.shape_value(j, q) * JxW;
                   }
               }
           }
@@ -836,6 +874,33 @@ namespace RestShape
     for (unsigned int c = 0; c < 3; ++c)
       reaction[c] = Utilities::MPI::sum(reaction[c], comm);
     return reaction;
+  }
+
+  Tensor<1, 3>
+  ForwardProblem::elastic_support_force() const
+  {
+    Tensor<1, 3> force;
+    const double k = parameters.boundary.support_stiffness;
+    if (k > 0)
+      {
+        FEFaceValues<3> ffv(*mapping_, fe_, face_quadrature_, update_values | update_JxW_values);
+        const FEValuesExtractors::Vector u(0);
+        std::vector<Tensor<1, 3>> face_d(face_quadrature_.size()), face_w(face_quadrature_.size());
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          if (cell->is_locally_owned() && support_labels.count(cell->material_id()))
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                {
+                  ffv.reinit(cell, f);
+                  ffv[u].get_function_values(d_ghost, face_d);
+                  ffv[u].get_function_values(w_ghost, face_w);
+                  for (const unsigned int q : ffv.quadrature_point_indices())
+                    force -= k * (face_d[q] - face_w[q]) * ffv.JxW(q);
+                }
+      }
+    for (unsigned int c = 0; c < 3; ++c)
+      force[c] = Utilities::MPI::sum(force[c], comm);
+    return force;
   }
 
   Tensor<1, 3>

@@ -243,9 +243,13 @@ namespace RestShape
             return finish("");
           }
         increases = (error > previous) ? increases + 1 : 0;
-        if (error > 2 * initial || increases >= 3)
+        if (error > 2 * initial)
           return finish("diverged: the error grew from " + mm(initial) + " to " + mm(error) +
                         " in " + std::to_string(result.iterations) + " iterations");
+        if (increases >= 3)
+          return finish("diverged: the error grew in 3 iterations in a row, from its best " +
+                        mm(std::min(best, error)) + " to " + mm(error) + " at iteration " +
+                        std::to_string(result.iterations));
         if (error < 0.99 * best)
           {
             best       = error;

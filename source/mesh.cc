@@ -1,6 +1,8 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <restshape/atomic_file.h>
@@ -570,6 +572,23 @@ namespace RestShape
       }
     else
       tria->refine_global(1);
+  }
+
+  void
+  LabelledMesh::refine_adaptive(const Vector<float> &indicators,
+                                const double         refine_fraction,
+                                const double         coarsen_fraction)
+  {
+    Assert(!is_simplex(), ExcInternalError());
+    if (auto *distributed = dynamic_cast<parallel::distributed::Triangulation<3> *>(tria.get()))
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        *distributed, indicators, refine_fraction, coarsen_fraction);
+    else
+      GridRefinement::refine_and_coarsen_fixed_number(*tria,
+                                                      indicators,
+                                                      refine_fraction,
+                                                      coarsen_fraction);
+    tria->execute_coarsening_and_refinement();
   }
 
   Triangulation<3> &

@@ -211,6 +211,23 @@ namespace RestShape
                       "'label' fixes all components of every node of the "
                       "cells with that label, 'label:xy' only the listed "
                       "components. Example: '3, 5:xy'.");
+    prm.declare_entry("Elastic support stiffness",
+                      "0",
+                      Patterns::Double(),
+                      "Stiffness k in N/m^3 (Pa of traction per m of "
+                      "displacement) of an elastic foundation on the outer "
+                      "faces: traction -k u, u the displacement from the rest "
+                      "shape, in every direction. It stands for tethers such "
+                      "as the arachnoid trabeculae between brain and skull, "
+                      "which are stress-free in the rest shape. 1e4 N/m^3 "
+                      "(10 Pa per mm) holds a 1.5 kPa brain against rotating "
+                      "freely in a frictionless skull. 0: none.");
+    prm.declare_entry("Elastic support labels",
+                      "",
+                      Patterns::Anything(),
+                      "The elastic support acts on the outer faces of cells "
+                      "with these labels; empty: all labels that are not "
+                      "fully fixed.");
     prm.leave_subsection();
   }
 
@@ -220,6 +237,14 @@ namespace RestShape
     prm.enter_subsection("Boundary conditions");
     fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
                                       "Boundary conditions/Fixed labels");
+    support_stiffness = prm.get_double("Elastic support stiffness");
+    if (!(support_stiffness >= 0))
+      throw InputError("",
+                       "Boundary conditions/Elastic support stiffness",
+                       "'" + prm.get("Elastic support stiffness") +
+                         "': expected a stiffness >= 0 in N/m^3");
+    support_labels = parse_label_set(prm.get("Elastic support labels"),
+                                     "Boundary conditions/Elastic support labels");
     prm.leave_subsection();
   }
 
@@ -401,6 +426,24 @@ namespace RestShape
                       "global: refine every cell. adaptive: refine where the "
                       "estimated error is largest (hexahedra only: deal.II "
                       "9.4 has no hanging nodes on tetrahedra).");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0, 1),
+                      "adaptive: the fraction of the cells with the largest "
+                      "error indicators that are refined in every cycle.");
+    prm.declare_entry("Coarsen fraction",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "adaptive: the fraction of the cells with the smallest "
+                      "error indicators that are coarsened (never below the "
+                      "initial mesh).");
+    prm.declare_entry("Estimator",
+                      "kelly",
+                      Patterns::Selection("kelly"),
+                      "Error indicator, computed in every cycle (written per "
+                      "cell as estimated_error in the VTU and in total to "
+                      "convergence.csv): kelly = jumps of the gradient of the "
+                      "displacement from the rest shape across faces.");
     prm.leave_subsection();
   }
 
@@ -411,6 +454,14 @@ namespace RestShape
     cycles   = prm.get_integer("Cycles");
     strategy = prm.get("Strategy") == "adaptive" ? Strategy::adaptive :
                                                    Strategy::global;
+    refine_fraction  = prm.get_double("Refine fraction");
+    coarsen_fraction = prm.get_double("Coarsen fraction");
+    if (refine_fraction + coarsen_fraction > 1)
+      throw InputError("",
+                       "Adaptive refinement/Coarsen fraction",
+                       "refine fraction + coarsen fraction = " +
+                         std::to_string(refine_fraction + coarsen_fraction) +
+                         ": expected at most 1");
     prm.leave_subsection();
   }
 

@@ -171,6 +171,10 @@ namespace RestShape
     /// Total external force of @p load on the mesh (N), and the weight.
     dealii::Tensor<1, 3>
     total_external_force(const LoadState &load) const;
+
+    /// Resultant (N) of the elastic support's tractions on the body.
+    dealii::Tensor<1, 3>
+    elastic_support_force() const;
     /// Sum over fixed DoFs of the internal forces: the support reaction (N).
     dealii::Tensor<1, 3>
     support_reaction() const;
@@ -251,7 +255,7 @@ namespace RestShape
     dealii::AffineConstraints<double>   constraints_newton; // + contact
     std::vector<bool>                   fixed_dof;          // relevant dofs
     std::vector<Node>                   owned_nodes_, relevant_nodes_;
-    std::set<Label>                     pressure_labels;
+    std::set<Label>                     pressure_labels, support_labels;
 
     MatrixType tangent;
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,

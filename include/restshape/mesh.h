@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
 
 #include <restshape/label_values.h>
 #include <restshape/parameters.h>
@@ -124,6 +125,17 @@ namespace RestShape
      */
     void
     refine_global();
+
+    /**
+     * Hexahedra only: refine the @p refine_fraction of the cells with the
+     * largest @p indicators (one per active cell) and coarsen the
+     * @p coarsen_fraction with the smallest; hanging nodes are constrained
+     * by the forward problem.
+     */
+    void
+    refine_adaptive(const dealii::Vector<float> &indicators,
+                    const double                 refine_fraction,
+                    const double                 coarsen_fraction);
 
     const MeshParameters parameters;
 

@@ -80,6 +80,8 @@ namespace RestShape
   struct BoundaryParameters
   {
     std::vector<FixedLabel> fixed_labels;
+    double          support_stiffness = 0; // N/m^3: traction (Pa) per m of displacement
+    std::set<Label> support_labels;        // empty: all labels not fully fixed
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -145,6 +147,8 @@ namespace RestShape
     };
     unsigned int cycles;
     Strategy     strategy;
+    double       refine_fraction  = 0.3;  // of the cells, largest indicators
+    double       coarsen_fraction = 0.0;  // of the cells, smallest indicators
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

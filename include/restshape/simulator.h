@@ -11,6 +11,7 @@
 #include <deal.II/base/timer.h>
 
 #include <restshape/contact.h>
+#include <restshape/error_estimator.h>
 #include <restshape/forward_problem.h>
 #include <restshape/inverse_problem.h>
 #include <restshape/material.h>
@@ -85,6 +86,7 @@ namespace RestShape
     std::vector<std::vector<double>> convergence_rows, iteration_rows;
     unsigned int                     next_step = 0; // VTU numbering
     InverseResult                    inverse_result;
+    ErrorEstimate                    estimate; // of the last cycle
   };
 } // namespace RestShape
 

@@ -16,7 +16,7 @@ namespace RestShape
   struct DisplacementErrors
   {
     double l2_relative      = 0; // |u - u_ex|_L2 / |u_ex|_L2
-    double h1_relative      = 0; // |grad(u - u_ex)|_L2 / |grad u_ex|_L2
+    double h1_relative      = 0; // |grad(u - u_ex)|_L2 / |grad u_ex|_L2 (absolute if grad u_ex = 0)
     double max_nodal_error  = 0; // max over nodes of |u - u_ex| (m)
   };
 
