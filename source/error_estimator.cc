@@ -29,7 +29,13 @@ namespace RestShape
                                      face_quadrature,
                                      std::map<types::boundary_id, const Function<3> *>(),
                                      ghosted,
-                                     estimate.indicators);
+                                     estimate.indicators,
+                                     ComponentMask(),
+                                     nullptr,
+                                     numbers::invalid_unsigned_int,
+                                     // A shared triangulation stores every
+                                     // cell: estimate on the owned ones.
+                                     tria.locally_owned_subdomain());
     const double eta = VectorTools::compute_global_error(tria, estimate.indicators,
                                                          VectorTools::L2_norm);
 

@@ -760,6 +760,14 @@ namespace RestShape
   }
 
   VectorType
+  ForwardProblem::owned_copy(const VectorType &v) const
+  {
+    VectorType copy(owned_dofs, comm);
+    copy = v;
+    return copy;
+  }
+
+  VectorType
   ForwardProblem::interpolate_vertex_field(const std::vector<Tensor<1, 3>> &values) const
   {
     VectorType result = zero_vector();

@@ -75,14 +75,14 @@ namespace RestShape
     TimerOutput::Scope scope(timer, "Output");
     // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
     VectorType error = forward.zero_vector(), target = forward.zero_vector();
-    error -= forward.displacement();
+    error -= forward.owned_copy(forward.displacement());
     for (const Node &node : forward.owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
         target[node.dofs[c]] = node.position[c];
     target.compress(VectorOperation::insert);
     VectorType rest = target, equilibrium = target;
-    rest += forward.rest_displacement();
-    equilibrium += forward.displacement();
+    rest += forward.owned_copy(forward.rest_displacement());
+    equilibrium += forward.owned_copy(forward.displacement());
 
     const std::string unit  = output->length_unit_name;
     const double      scale = output->length_scale();

@@ -168,7 +168,7 @@ namespace RestShape
     // Displacement from the rest shape: d - w.
     VectorType displacement(owned, comm);
     displacement = problem.displacement();
-    displacement -= problem.rest_displacement();
+    displacement -= problem.owned_copy(problem.rest_displacement());
     displacement *= to_unit;
     VectorType displacement_ghost(owned, relevant, comm);
     displacement_ghost = displacement;

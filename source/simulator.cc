@@ -276,7 +276,8 @@ namespace RestShape
     // Table 1 of Morin et al.: the same extra force field on (1) the
     // pre-stressed model (from its equilibrium under the scene's loads) and
     // (2) the model stress-free in the mesh geometry (no other load).
-    const VectorType d_eq = forward->displacement(), w_rest = forward->rest_displacement();
+    const VectorType d_eq   = forward->owned_copy(forward->displacement());
+    const VectorType w_rest = forward->owned_copy(forward->rest_displacement());
     const LoadState  scene = forward->scene_load();
     const Tensor<1, 3> extra = parameters.prestress_comparison.extra_acceleration;
     pcout << "Prestress comparison: extra body force " << extra << " m/s^2" << std::endl;
@@ -333,9 +334,8 @@ namespace RestShape
   Simulator::postprocess(const unsigned int cycle, const SolveStatistics &stats)
   {
     // Nodal displacement from the rest shape, in mm.
-    VectorType u = forward->zero_vector();
-    u            = forward->displacement();
-    u -= forward->rest_displacement();
+    VectorType u = forward->owned_copy(forward->displacement());
+    u -= forward->owned_copy(forward->rest_displacement());
     const auto [mean_u_m, max_u_m] = forward->nodal_norms(u);
     const double mean_u = mean_u_m * 1e3, max_u = max_u_m * 1e3;
     const double n_nodes = Utilities::MPI::sum(double(forward->owned_nodes().size()), comm);
@@ -358,6 +358,9 @@ namespace RestShape
     summary.set("n_dofs", long(forward->dof_handler().n_dofs()));
     summary.set("newton_iterations", long(stats.newton_iterations));
     summary.set("load_steps", long(stats.load_steps));
+    if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
+      summary.set("linear_iterations_per_newton_step",
+                  double(stats.linear_iterations) / std::max(1u, stats.newton_iterations));
     if (!parameters.inverse.enabled)
       summary.set("relative_residual", stats.residual / stats.reference);
     summary.set("max_displacement_mm", max_u);

@@ -16,7 +16,13 @@ scenes=$here/scenes
 
 rm -rf "$out"
 mkdir -p "$out"
-if ! "$exe" --set "Output/Directory=$out" "$@" "$scenes/$name.prm" >"$out/screen.log" 2>&1; then
+# MPI_RANKS=N (environment) runs the scene on N MPI ranks against the same
+# expected output: results must agree with the serial run to solver tolerance.
+launch=()
+if [ -n "${MPI_RANKS:-}" ]; then
+  launch=(mpirun --allow-run-as-root --oversubscribe -np "$MPI_RANKS")
+fi
+if ! "${launch[@]}" "$exe" --set "Output/Directory=$out" "$@" "$scenes/$name.prm" >"$out/screen.log" 2>&1; then
   echo "restshape failed on $name.prm:"
   tail -n 30 "$out/screen.log"
   exit 1

@@ -114,6 +114,11 @@ namespace RestShape
     VectorType
     zero_vector() const;
 
+    /// An owned copy of @p v (owned or ghosted): Trilinos adds, subtracts
+    /// and compares only vectors of the same layout.
+    VectorType
+    owned_copy(const VectorType &v) const;
+
     /**
      * A displacement-like field from values at the mesh vertices (indexed
      * by triangulation vertex), interpolated linearly (P1/Q1) into the

@@ -1,0 +1,86 @@
+#!/bin/bash
+# Scaling benchmark on the brain (prm/brain.prm: CSF, skull contact,
+# elastic support): one forward solve and one whole inverse iteration per
+# mesh and element, with CG + ML AMG (Solver/Linear solver = cg-amg) and no
+# VTU output. Reports DoFs, wall time, time per DoF, Newton iterations,
+# AMG-preconditioned CG iterations per Newton step (flat = linear cost),
+# peak memory (max RSS, GNU time), where the time goes (TimerOutput), and the
+# log-log slope of time against DoFs; then the largest forward case on 1 and
+# 2 MPI ranks. Meshes are made by meshes/brain.sh (medium: 6 mm cells, fine:
+# 3 mm) into $OUT/meshes.
+#
+# usage: benchmarks/scaling/run.sh [--coarse]
+#   --coarse: the committed coarse mesh, P1, forward only, 1 and 2 ranks
+#             (the version run in the tests)
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/scaling),
+# CASES ("coarse:1 medium:1 coarse:2 fine:1 medium:2 fine:2": mesh:degree),
+# INVERSE (1: also the inverse iteration).
+set -u
+exe=${RESTSHAPE:-build/restshape}
+build=$(dirname "$exe")
+out=${OUT:-output/benchmarks/scaling}
+cases=${CASES:-coarse:1 medium:1 coarse:2 fine:1 medium:2 fine:2}
+inverse=${INVERSE:-1}
+if [ "${1:-}" = --coarse ]; then
+  cases=coarse:1
+  inverse=0
+fi
+mkdir -p "$out/meshes"
+mesh_file() {
+  if [ "$1" = coarse ]; then
+    echo meshes/brain_coarse.msh
+  else
+    [ -f "$out/meshes/brain_$1.msh" ] ||
+      { cp -n meshes/brain_labels.nii.gz "$out/meshes/" && BUILD=$build meshes/brain.sh "$1" "$out/meshes" >/dev/null; }
+    echo "$out/meshes/brain_$1.msh"
+  fi
+}
+value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }
+
+run() { # name ranks mesh degree inverse
+  local dir=$out/$1 ranks=$2 launch=()
+  [ "$ranks" -gt 1 ] && launch=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
+  rm -rf "$dir"
+  /usr/bin/time -f "%M" -o "$dir.rss" "${launch[@]}" "$exe" --set "Output/Directory=$dir" \
+    --set "Mesh/File=$3" --set "Discretization/Polynomial degree=$4" \
+    --set "Inverse problem/Enabled=$5" --set "Prestress comparison/Enabled=false" \
+    --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" \
+    prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
+  local s=$dir/summary.json
+  local dofs seconds
+  dofs=$(value n_dofs "$s")
+  seconds=$(value wall_seconds "$s")
+  echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$(($(cat "$dir.rss") / 1024)),$(share Assembly "$dir.log"),$(share 'Linear solve' "$dir.log"),$(share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
+  printf '| %s | %s | %s | %.1f | %.2g | %s | %s | %s | %s | %s / %s / %s |\n' "$1" "$ranks" "$dofs" "$seconds" \
+    "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$(value newton_iterations "$s")" \
+    "$(if [ "$5" = true ]; then echo -; else value linear_iterations_per_newton_step "$s"; fi)" "$(($(cat "$dir.rss") / 1024))" \
+    "$(value inverse_iterations "$s")" "$(share Assembly "$dir.log")" "$(share 'Linear solve' "$dir.log")" \
+    "$(share 'Contact search' "$dir.log")"
+}
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "run,ranks,n_dofs,seconds,newton_iterations,cg_per_newton,peak_rss_mb,assembly,linear_solve,contact_search" >"$out/scaling.csv"
+echo
+echo "| run | ranks | DoFs | seconds | microseconds per DoF | Newton iterations | CG iterations per Newton step | peak memory (MB) | inverse iterations | time: assembly / linear solve / contact search |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+status=0
+largest=""
+for c in $cases; do
+  level=${c%%:*}
+  degree=${c##*:}
+  mesh=$(mesh_file "$level")
+  run "forward_${level}_P$degree" 1 "$mesh" "$degree" false || status=1
+  largest="$level:$degree"
+  if [ "$inverse" = 1 ]; then
+    run "inverse_${level}_P$degree" 1 "$mesh" "$degree" true || status=1
+  fi
+done
+level=${largest%%:*}
+degree=${largest##*:}
+run "forward_${level}_P${degree}_2ranks" 2 "$(mesh_file "$level")" "$degree" false || status=1
+echo
+awk -F, '$1 ~ /^forward/ && $2 == 1 { x[++n] = log($3); y[n] = log($4) }
+  END { if (n > 1) { for (i = 1; i <= n; ++i) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }
+        printf "log-log slope of forward time against DoFs: %.2f (%d meshes)\n", (n * sxy - sx * sy) / (n * sxx - sx * sx), n } }' "$out/scaling.csv"
+exit $status

@@ -1,0 +1,58 @@
+#!/bin/bash
+# Benchmark: wall time against error, per discretisation, on the inverse
+# gravity column (prm/column_inverse.prm: its exact rest shape is known, so
+# the error is exact). Elements: P1 and P2 tetrahedra, Q1 and Q2 hexahedra
+# (each tetrahedron split into four hexahedra), each under uniform
+# refinement (Mesh/Global refinements = 0, 1, ...; every level a separate
+# run, so the time is that of one whole inverse solve, setup and output
+# included, VTU output off). Writes $OUT/time_vs_error.csv
+# (element, level, n_cells, n_dofs, seconds, rest L2 and H1 error relative,
+# inverse iterations) and prints a markdown table; plot with
+# benchmarks/time_vs_error/plot.py.
+#
+# usage: benchmarks/time_vs_error/run.sh [--coarse]
+#   --coarse: level 0 of every element only (the version run in the tests)
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/time_vs_error),
+# LEVELS_P1 (0 1 2 3), LEVELS_P2 (0 1 2), LEVELS_Q1 (0 1 2), LEVELS_Q2 (0 1).
+set -u
+exe=${RESTSHAPE:-build/restshape}
+out=${OUT:-output/benchmarks/time_vs_error}
+scene=prm/column_inverse.prm
+declare -A levels=([P1]=${LEVELS_P1:-0 1 2 3} [P2]=${LEVELS_P2:-0 1 2}
+                   [Q1]=${LEVELS_Q1:-0 1 2} [Q2]=${LEVELS_Q2:-0 1})
+if [ "${1:-}" = --coarse ]; then
+  levels=([P1]=0 [P2]=0 [Q1]=0 [Q2]=0)
+fi
+mkdir -p "$out"
+value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+
+csv=$out/time_vs_error.csv
+echo "element,level,n_cells,n_dofs,seconds,rest_l2_error_relative,rest_h1_error_relative,inverse_iterations" >"$csv"
+echo "scene: $scene; machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo
+echo "| element | level | cells | DoFs | seconds | rest L2 error (rel.) | rest H1 error (rel.) | inverse iterations |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+status=0
+for element in P1 P2 Q1 Q2; do
+  case $element in
+  P*) cells=tetrahedra ;;
+  Q*) cells=hexahedra ;;
+  esac
+  degree=${element:1:1}
+  for level in ${levels[$element]}; do
+    dir=$out/${element}_$level
+    if ! "$exe" --set "Output/Directory=$dir" --set "Output/Write VTU=false" \
+      --set "Mesh/Cell type=$cells" --set "Discretization/Polynomial degree=$degree" \
+      --set "Mesh/Global refinements=$level" --set "Inverse problem/Tolerance=1e-9" \
+      "$scene" >"$dir.log" 2>&1; then
+      echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"
+      status=1
+      continue
+    fi
+    s=$dir/summary.json
+    row="$element,$level,$(value n_cells "$s"),$(value n_dofs "$s"),$(value wall_seconds "$s"),$(value rest_l2_error_relative "$s"),$(value rest_h1_error_relative "$s"),$(value inverse_iterations "$s")"
+    echo "$row" >>"$csv"
+    echo "| ${row//,/ | } |"
+  done
+done
+exit $status
