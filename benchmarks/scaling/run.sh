@@ -14,7 +14,8 @@
 #             (the version run in the tests)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/scaling),
 # CASES ("coarse:1 medium:1 coarse:2 fine:1 medium:2 fine:2": mesh:degree),
-# INVERSE (1: also the inverse iteration).
+# INVERSE (1: also the inverse iteration), SET (one extra 'Section/Parameter=value',
+# e.g. 'Contact/Obstacle file=' to measure without contact).
 set -u
 exe=${RESTSHAPE:-build/restshape}
 build=$(dirname "$exe")
@@ -46,7 +47,7 @@ run() { # name ranks mesh degree inverse
     --set "Mesh/File=$3" --set "Discretization/Polynomial degree=$4" \
     --set "Inverse problem/Enabled=$5" --set "Prestress comparison/Enabled=false" \
     --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" \
-    prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
+    ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
   local s=$dir/summary.json
   local dofs seconds
   dofs=$(value n_dofs "$s")
