@@ -113,6 +113,9 @@ namespace RestShape
     , fe_(*scalar_element(mesh.is_simplex(), parameters.discretization.degree),
           3)
     , dof_handler_(mesh.triangulation())
+    , tangent_type(parameters.discretization.tangent == TangentType::adaptive ?
+                     TangentType::consistent :
+                     parameters.discretization.tangent)
   {
     const unsigned int degree = parameters.discretization.degree;
     if (mesh.is_simplex())
@@ -362,7 +365,7 @@ namespace RestShape
             !law.evaluate(F,
                           P,
                           matrix ? &A : nullptr,
-                          parameters.discretization.tangent,
+                          tangent_type,
                           &W))
           {
             copy.valid = false;
@@ -536,6 +539,10 @@ namespace RestShape
 
     double reference = 0;
     stats.residual_history.clear();
+    // adaptive: the consistent tangent, but after a step the line search
+    // had to shorten, one step with the projected one.
+    const TangentType chosen = parameters.discretization.tangent;
+    tangent_type = chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
          ++it)
       {
@@ -593,13 +600,17 @@ namespace RestShape
         double           alpha     = alpha_max;
         bool             accepted     = false;
         double           trial_residual = 0;
+        unsigned int     inverted_trials = 0;
         for (unsigned int ls = 0; ls < 12 && !accepted; ++ls, alpha *= 0.5)
           {
             d = d_start;
             d.add(alpha, newton_update);
             d_ghost = d;
             if (!assemble(Assemble::residual))
-              continue;
+              {
+                ++inverted_trials;
+                continue;
+              }
             trial_residual = residual_condensed.l2_norm();
             accepted =
               (alpha == alpha_max && set_changed) ||
@@ -614,6 +625,9 @@ namespace RestShape
                         residual / reference,
                         (accepted ? trial_residual : residual) / reference,
                         alpha)
+              << (inverted_trials > 0 ?
+                    " (" + std::to_string(inverted_trials) + " shorter: a cell inverted)" :
+                    std::string())
               << (parameters.solver.linear_solver == LinearSolverType::cg_amg ?
                     ", " + linear_solver->last_method + " " +
                       std::to_string(stats.linear_iterations) + " its" :
@@ -622,6 +636,10 @@ namespace RestShape
               << std::endl;
         if (accepted)
           stats.residual_history.push_back(trial_residual / reference);
+        if (chosen == TangentType::adaptive)
+          tangent_type = (tangent_type == TangentType::consistent && alpha < alpha_max) ?
+                           TangentType::projected :
+                           TangentType::consistent;
         if (!accepted)
           {
             d       = d_start;

@@ -32,6 +32,45 @@ namespace RestShape
     return true;
   }
 
+  void
+  CorotationalLaw::project_twist_modes(const Tensor2 &R,
+                                       const Tensor2 &S,
+                                       const double   tr_E,
+                                       Tensor4 &      A) const
+  {
+    // With S = sum_k s_k q_k q_k^T, the rotational variations
+    // dF = R skew(q_k) / sqrt(2) are eigenvectors of dP/dF (the "twist"
+    // modes of Smith et al. 2019, "Analytic eigensystems for isotropic
+    // distortion energies") with eigenvalues
+    //   (2 mu (s_i + s_j - 2) + 2 lambda tr E) / (s_i + s_j),  {i, j, k}
+    // distinct. They turn negative under compression, the only way the
+    // co-rotational tangent loses definiteness (the other six eigenvalues
+    // are 2 mu and those of 2 mu I + lambda 1 1^T). Remove the negative ones.
+    const auto eig =
+      eigenvectors(symmetrize(S));
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const double s_ij  = eig[(k + 1) % 3].first + eig[(k + 2) % 3].first;
+        const double value = (2 * mu * (s_ij - 2) + 2 * lambda * tr_E) / s_ij;
+        if (value >= 0)
+          continue;
+        const Tensor<1, 3> &q = eig[k].second;
+        Tensor2             W;
+        W[0][1] = -q[2];
+        W[0][2] = q[1];
+        W[1][0] = q[2];
+        W[1][2] = -q[0];
+        W[2][0] = -q[1];
+        W[2][1] = q[0];
+        const Tensor2 D = (1. / std::sqrt(2.)) * (R * W);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int J = 0; J < 3; ++J)
+            for (unsigned int k2 = 0; k2 < 3; ++k2)
+              for (unsigned int L = 0; L < 3; ++L)
+                A[i][J][k2][L] -= value * D[i][J] * D[k2][L];
+      }
+  }
+
   CorotationalLaw::CorotationalLaw(const double E, const double nu)
     : mu(E / (2 * (1 + nu)))
     , lambda(E * nu / ((1 + nu) * (1 - 2 * nu)))
@@ -95,6 +134,8 @@ namespace RestShape
             for (unsigned int J = 0; J < 3; ++J)
               A[i][J][k][L] = dP[i][J];
         }
+    if (type == TangentType::projected)
+      project_twist_modes(R, S, tr_E, A);
     return true;
   }
 

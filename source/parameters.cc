@@ -120,12 +120,20 @@ namespace RestShape
                       "Q1 hexahedra) or 2 (P2 / Q2).");
     prm.declare_entry("Tangent",
                       "consistent",
-                      Patterns::Selection("consistent|warped"),
+                      Patterns::Selection("consistent|projected|adaptive|warped"),
                       "Newton tangent of the co-rotational law. consistent: "
                       "exact derivative including the derivative of the "
-                      "rotation (quadratic convergence). warped: R K0 R^T as "
-                      "in SOFA and Mueller et al. 2002 (no dR term; linear "
-                      "convergence), kept for comparison.");
+                      "rotation (quadratic convergence). projected: the "
+                      "exact derivative with its negative eigenvalues (the "
+                      "rotational modes of compressed points) set to zero, "
+                      "so the stiffness stays positive semi-definite "
+                      "(projected Newton; equal to consistent wherever that "
+                      "is positive; converges linearly where it differs). "
+                      "adaptive: consistent, but after a Newton step whose "
+                      "line search had to shorten the step, one step with "
+                      "the projected tangent. warped: R K0 R^T as in SOFA and Mueller "
+                      "et al. 2002 (no dR term; linear convergence), kept "
+                      "for comparison.");
     prm.leave_subsection();
   }
 
@@ -134,8 +142,11 @@ namespace RestShape
   {
     prm.enter_subsection("Discretization");
     degree  = prm.get_integer("Polynomial degree");
-    tangent = prm.get("Tangent") == "warped" ? TangentType::warped :
-                                               TangentType::consistent;
+    const std::string tangent_name = prm.get("Tangent");
+    tangent = tangent_name == "warped"    ? TangentType::warped :
+              tangent_name == "projected" ? TangentType::projected :
+              tangent_name == "adaptive"  ? TangentType::adaptive :
+                                            TangentType::consistent;
     prm.leave_subsection();
   }
 

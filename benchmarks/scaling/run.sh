@@ -13,14 +13,17 @@
 #   --coarse: the committed coarse mesh, P1, forward only, 1 and 2 ranks
 #             (the version run in the tests)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/scaling),
-# CASES ("coarse:1 medium:1 coarse:2 fine:1 medium:2 fine:2": mesh:degree),
+# CASES ("coarse:1 medium:1 coarse:2 medium+1:1 medium+2:1": mesh:degree,
+# where mesh+N refines the mesh N times globally: the same geometry with 8^N
+# times the cells), TWO_RANKS (the case run on 1 and 2 ranks; default the
+# last of CASES),
 # INVERSE (1: also the inverse iteration), SET (one extra 'Section/Parameter=value',
 # e.g. 'Contact/Obstacle file=' to measure without contact).
 set -u
 exe=${RESTSHAPE:-build/restshape}
 build=$(dirname "$exe")
 out=${OUT:-output/benchmarks/scaling}
-cases=${CASES:-coarse:1 medium:1 coarse:2 fine:1 medium:2 fine:2}
+cases=${CASES:-coarse:1 medium:1 coarse:2 medium+1:1 medium+2:1}
 inverse=${INVERSE:-1}
 if [ "${1:-}" = --coarse ]; then
   cases=coarse:1
@@ -39,12 +42,13 @@ mesh_file() {
 value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
 share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }
 
-run() { # name ranks mesh degree inverse
-  local dir=$out/$1 ranks=$2 launch=()
+run() { # name ranks mesh[+refinements] degree inverse
+  local dir=$out/$1 ranks=$2 launch=() refinements=0
+  [[ $3 == *+* ]] && refinements=${3##*+}
   [ "$ranks" -gt 1 ] && launch=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
   rm -rf "$dir"
   /usr/bin/time -f "%M" -o "$dir.rss" "${launch[@]}" "$exe" --set "Output/Directory=$dir" \
-    --set "Mesh/File=$3" --set "Discretization/Polynomial degree=$4" \
+    --set "Mesh/File=${3%+*}" --set "Mesh/Global refinements=$refinements" --set "Discretization/Polynomial degree=$4" \
     --set "Inverse problem/Enabled=$5" --set "Prestress comparison/Enabled=false" \
     --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" \
     ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
@@ -67,19 +71,25 @@ echo "| run | ranks | DoFs | seconds | microseconds per DoF | Newton iterations 
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 status=0
 largest=""
+mesh_spec() { # level[+N] -> file[+N]
+  local file
+  file=$(mesh_file "${1%+*}")
+  if [[ $1 == *+* ]]; then echo "$file+${1##*+}"; else echo "$file"; fi
+}
 for c in $cases; do
   level=${c%%:*}
   degree=${c##*:}
-  mesh=$(mesh_file "$level")
+  mesh=$(mesh_spec "$level")
   run "forward_${level}_P$degree" 1 "$mesh" "$degree" false || status=1
   largest="$level:$degree"
   if [ "$inverse" = 1 ]; then
     run "inverse_${level}_P$degree" 1 "$mesh" "$degree" true || status=1
   fi
 done
+largest=${TWO_RANKS:-$largest}
 level=${largest%%:*}
 degree=${largest##*:}
-run "forward_${level}_P${degree}_2ranks" 2 "$(mesh_file "$level")" "$degree" false || status=1
+run "forward_${level}_P${degree}_2ranks" 2 "$(mesh_spec "$level")" "$degree" false || status=1
 echo
 awk -F, '$1 ~ /^forward/ && $2 == 1 { x[++n] = log($3); y[n] = log($4) }
   END { if (n > 1) { for (i = 1; i <= n; ++i) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }

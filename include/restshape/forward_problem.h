@@ -267,6 +267,8 @@ namespace RestShape
       newton_update;
     VectorType d, d_ghost, w, w_ghost;
     double     total_energy = 0; // of the last assembly (J)
+    // Tangent of the next assembly (Tangent = adaptive switches it).
+    TangentType tangent_type = TangentType::consistent;
     LoadState  current_load;
 
     std::unique_ptr<LinearSolver> linear_solver;

@@ -42,7 +42,8 @@ namespace RestShape
     /**
      * First Piola-Kirchhoff stress and, if @p tangent is not null, dP/dF as
      * A[i][J][k][L] = d P_iJ / d F_kL. consistent: exact derivative (with
-     * dR/dF from W S + S W = skew(R^T dF - dF^T R)); warped: R C0 sym(R^T dF)
+     * dR/dF from W S + S W = skew(R^T dF - dF^T R)); projected: consistent
+     * with the negative eigenvalues removed; warped: R C0 sym(R^T dF)
      * with R held fixed (SOFA's R K0 R^T). Returns false if det F <= 0.
      */
     bool
@@ -54,6 +55,17 @@ namespace RestShape
 
     double
     energy_density(const Tensor2 &F) const;
+
+    /**
+     * Subtract from the consistent tangent @p A its negative eigenvalues:
+     * those of the rotational ("twist") modes R skew(q_k) of compressed
+     * points, q_k the eigenvectors of S (projected Newton).
+     */
+    void
+    project_twist_modes(const Tensor2 &R,
+                        const Tensor2 &S,
+                        const double   tr_E,
+                        Tensor4 &      A) const;
 
     double mu     = 0;
     double lambda = 0;

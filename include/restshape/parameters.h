@@ -26,6 +26,8 @@ namespace RestShape
   enum class TangentType
   {
     consistent,
+    projected,
+    adaptive,
     warped
   };
 

@@ -7,7 +7,14 @@
 //    rotation of the whole body by 40 degrees gives zero internal force; the
 //    assembled tangent matches central differences of the assembled
 //    residual at a deformed state.
+// 3. Projected tangent: under compression the consistent tangent has
+//    negative eigenvalues (rotational modes); the projected one has exactly
+//    the consistent spectrum with those set to zero, and equals the
+//    consistent tangent where that is positive (stretch).
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
 
 #include "test_utilities.h"
 
@@ -98,6 +105,67 @@ namespace
           dW[k][L] = (law.energy_density(Fp) - law.energy_density(Fm)) / 2e-6;
         }
     check_below("material: |P - dW/dF| / |P|", (P_F - dW).norm() / P_F.norm(), 1e-6);
+  }
+
+  // Sorted eigenvalues of dP/dF as a symmetric 9x9 matrix (it is the
+  // Hessian of W), and its asymmetry.
+  std::vector<double>
+  spectrum(const CorotationalLaw &law, const Tensor2 &F, const TangentType type, double &asymmetry)
+  {
+    Tensor2 P;
+    Tensor4 A;
+    law.evaluate(F, P, &A, type);
+    LAPACKFullMatrix<double> M(9, 9);
+    asymmetry = 0;
+    for (unsigned int a = 0; a < 9; ++a)
+      for (unsigned int b = 0; b < 9; ++b)
+        {
+          M(a, b)   = A[a / 3][a % 3][b / 3][b % 3];
+          asymmetry = std::max(asymmetry, std::abs(M(a, b) - A[b / 3][b % 3][a / 3][a % 3]));
+        }
+    M.compute_eigenvalues();
+    std::vector<double> values(9);
+    for (unsigned int a = 0; a < 9; ++a)
+      values[a] = M.eigenvalue(a).real();
+    std::sort(values.begin(), values.end());
+    return values;
+  }
+
+  void
+  projected_tangent_checks()
+  {
+    const CorotationalLaw law(1500., 0.45);
+    const Tensor2         R0 = rotation(Tensor<1, 3>({0.3, -0.5, 0.8}));
+    Tensor2               U;
+    U[0][0] = 0.85, U[1][1] = 0.92, U[2][2] = 0.97;
+    U[0][1] = U[1][0] = 0.03;
+    U[1][2] = U[2][1] = -0.02;
+    const Tensor2 compressed = R0 * U; // 24 % volume loss
+    double        asymmetry;
+    const auto    consistent = spectrum(law, compressed, TangentType::consistent, asymmetry);
+    check_below("projected: asymmetry of the consistent tangent / mu", asymmetry / law.mu, 1e-10);
+    check_below("projected: smallest consistent eigenvalue / mu (compressed, must be < 0)",
+                consistent[0] / law.mu, -0.1);
+    const auto projected = spectrum(law, compressed, TangentType::projected, asymmetry);
+    check_below("projected: asymmetry of the projected tangent / mu", asymmetry / law.mu, 1e-10);
+    std::vector<double> clamped = consistent;
+    for (double &v : clamped)
+      v = std::max(v, 0.);
+    std::sort(clamped.begin(), clamped.end());
+    double difference = 0;
+    for (unsigned int a = 0; a < 9; ++a)
+      difference = std::max(difference, std::abs(projected[a] - clamped[a]));
+    check_below("projected: |spectrum - max(consistent spectrum, 0)| / mu (compressed)",
+                difference / law.mu, 1e-9);
+
+    Tensor2 V = U;
+    V[0][0] = 1.1, V[1][1] = 1.05, V[2][2] = 1.02;
+    Tensor2 P;
+    Tensor4 A_c, A_p;
+    law.evaluate(R0 * V, P, &A_c, TangentType::consistent);
+    law.evaluate(R0 * V, P, &A_p, TangentType::projected);
+    check_below("projected: |projected - consistent| / |consistent| (stretched)",
+                (A_p - A_c).norm() / A_c.norm(), 1e-14);
   }
 
   std::string
@@ -191,6 +259,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   material_point_checks();
+  projected_tangent_checks();
   assembled_checks("tetrahedra", 1);
   assembled_checks("tetrahedra", 2);
   assembled_checks("hexahedra", 1);
