@@ -542,6 +542,25 @@ namespace RestShape
     return Utilities::MPI::max(radius, forward.dof_handler().get_triangulation().get_communicator());
   }
 
+  double
+  ContactProblem::patch_radius(const Tensor<1, 3> &direction) const
+  {
+    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    Tensor<1, 3>   sum;
+    double         n = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          sum += c.node.position;
+          n += 1;
+        }
+    sum = Utilities::MPI::sum(sum, comm);
+    n   = Utilities::MPI::sum(n, comm);
+    if (n == 0 || direction.norm() == 0)
+      return 0;
+    return contact_radius(Point<3>(sum / n), direction);
+  }
+
   VectorType
   ContactProblem::nodal_fields(const VectorType &raw_residual, const double length_scale) const
   {

@@ -635,11 +635,27 @@ namespace RestShape
               << (contact != nullptr ? contact->progress_text() : std::string())
               << std::endl;
         if (accepted)
-          stats.residual_history.push_back(trial_residual / reference);
-        if (chosen == TangentType::adaptive)
-          tangent_type = (tangent_type == TangentType::consistent && alpha < alpha_max) ?
-                           TangentType::projected :
-                           TangentType::consistent;
+          {
+            stats.residual_history.push_back(trial_residual / reference);
+            if (chosen == TangentType::adaptive)
+              tangent_type =
+                (tangent_type == TangentType::consistent && alpha < alpha_max) ?
+                  TangentType::projected :
+                  TangentType::consistent;
+          }
+        else if (chosen == TangentType::adaptive &&
+                 tangent_type == TangentType::consistent)
+          {
+            // No step along the consistent direction helps: take the
+            // projected one from the same state.
+            pcout << "      no step along the consistent tangent helps: "
+                     "the projected one from the same state"
+                  << std::endl;
+            d            = d_start;
+            d_ghost      = d;
+            tangent_type = TangentType::projected;
+            continue;
+          }
         if (!accepted)
           {
             d       = d_start;

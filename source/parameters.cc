@@ -376,6 +376,15 @@ namespace RestShape
                       "Write the VTU/PVTU fields and the .pvd/.visit "
                       "records. Turn off for benchmarks; summary.json and "
                       "the .csv files are always written.");
+    prm.declare_entry("Write nodal CSV",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write nodes.csv: one row per node (every support "
+                      "point of the element) with its mesh position (mesh "
+                      "length unit), its displacement from the rest shape "
+                      "and the shift from the mesh to the rest shape (both "
+                      "in mm), for post-processing and for comparing meshes "
+                      "node by node (benchmarks/time_vs_error/brain.sh).");
     prm.leave_subsection();
   }
 
@@ -385,6 +394,7 @@ namespace RestShape
     prm.enter_subsection("Output");
     directory = prm.get("Directory");
     write_vtu = prm.get_bool("Write VTU");
+    write_nodal_csv = prm.get_bool("Write nodal CSV");
     prm.leave_subsection();
     if (directory.empty())
       throw InputError("", "Output/Directory", "no directory given");

@@ -393,6 +393,8 @@ namespace RestShape
         const auto [p_min, p_max] = contact->pressure_range(forward->raw_residual());
         summary.set("contact_pressure_min_Pa", p_min);
         summary.set("contact_pressure_max_Pa", p_max);
+        summary.set("contact_patch_radius_mm",
+                    contact->patch_radius(contact_force) * 1e3);
       }
 
     {
@@ -469,6 +471,31 @@ namespace RestShape
       pcout << "  Contact: " << contact->n_active() << " active nodes, force " << contact_force
             << " N, largest penetration " << contact->max_penetration(true) * 1e3 << " mm"
             << std::endl;
+    if (parameters.output.write_nodal_csv)
+      {
+        TimerOutput::Scope               scope(timer, "Output");
+        const VectorType                 w = forward->owned_copy(forward->rest_displacement());
+        std::vector<std::vector<double>> rows;
+        for (const Node &node : forward->owned_nodes())
+          {
+            std::vector<double> row;
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(node.position[c] * output->length_scale());
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(u[node.dofs[c]] * 1e3);
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(w[node.dofs[c]] * 1e3);
+            rows.push_back(row);
+          }
+        std::vector<std::vector<double>> all_rows;
+        for (const auto &part : Utilities::MPI::gather(comm, rows))
+          all_rows.insert(all_rows.end(), part.begin(), part.end());
+        const std::string unit = parameters.mesh.length_unit_name;
+        output->write_csv("nodes.csv",
+                          {"x_" + unit, "y_" + unit, "z_" + unit, "u_x_mm", "u_y_mm", "u_z_mm",
+                           "rest_shift_x_mm", "rest_shift_y_mm", "rest_shift_z_mm"},
+                          all_rows);
+      }
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope      scope(timer, "Output");

@@ -59,7 +59,7 @@ run() { # name ranks mesh[+refinements] degree inverse
   echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$(($(cat "$dir.rss") / 1024)),$(share Assembly "$dir.log"),$(share 'Linear solve' "$dir.log"),$(share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
   printf '| %s | %s | %s | %.1f | %.2g | %s | %s | %s | %s | %s / %s / %s |\n' "$1" "$ranks" "$dofs" "$seconds" \
     "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$(value newton_iterations "$s")" \
-    "$(if [ "$5" = true ]; then echo -; else value linear_iterations_per_newton_step "$s"; fi)" "$(($(cat "$dir.rss") / 1024))" \
+    "$(if [ "$5" = true ]; then echo -; else printf '%.1f' "$(value linear_iterations_per_newton_step "$s")"; fi)" "$(($(cat "$dir.rss") / 1024))" \
     "$(value inverse_iterations "$s")" "$(share Assembly "$dir.log")" "$(share 'Linear solve' "$dir.log")" \
     "$(share 'Contact search' "$dir.log")"
 }

@@ -1,35 +1,57 @@
 #!/usr/bin/env python3
-# Log-log plot of wall time against the rest shape's relative L2 error, one
-# line per element, from benchmarks/time_vs_error/run.sh's CSV.
+# Log-log plots of wall time against error, one line per element, from the
+# CSV files of benchmarks/time_vs_error/{run,brain,hertz}.sh:
+#   time_vs_error.csv -> doc/figures/time_vs_error.png (inverse column, rest
+#                        shape's relative L2 error)
+#   brain/brain.csv   -> doc/figures/time_vs_error_brain.png (brain forward,
+#                        relative RMS nodal error against the reference)
+#   hertz.csv         -> doc/figures/time_vs_error_hertz.png (Hertz, peak
+#                        contact pressure error)
+# A missing CSV is skipped.
 #
-# usage: python3 benchmarks/time_vs_error/plot.py [CSV] [PNG]
-#   defaults: output/benchmarks/time_vs_error/time_vs_error.csv,
-#             doc/figures/time_vs_error.png
+# usage: python3 benchmarks/time_vs_error/plot.py [DIRECTORY]
+#   default DIRECTORY: output/benchmarks/time_vs_error
 import csv
+import os
 import sys
 
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-source = sys.argv[1] if len(sys.argv) > 1 else 'output/benchmarks/time_vs_error/time_vs_error.csv'
-target = sys.argv[2] if len(sys.argv) > 2 else 'doc/figures/time_vs_error.png'
-rows = list(csv.DictReader(open(source)))
-plt.figure(figsize=(6.5, 4.2))
-for element, style in (('P1', '-o'), ('P2', '-s'), ('Q1', '--o'), ('Q2', '--s')):
-    r = [x for x in rows if x['element'] == element]
-    if not r:
-        continue
-    plt.loglog([float(x['rest_l2_error_relative']) for x in r], [float(x['seconds']) for x in r],
-               style, label=element)
-    for x in r:
-        plt.annotate(x['n_dofs'], (float(x['rest_l2_error_relative']), float(x['seconds'])),
-                     fontsize=6, xytext=(3, 3), textcoords='offset points')
-plt.gca().invert_xaxis()
-plt.xlabel('relative L2 error of the rest shape (inverse column)')
-plt.ylabel('wall time of the whole inverse solve (s)')
-plt.grid(True, which='both', alpha=0.3)
-plt.legend()
-plt.tight_layout()
-plt.savefig(target, dpi=120)
-print('wrote', target)
+directory = sys.argv[1] if len(sys.argv) > 1 else 'output/benchmarks/time_vs_error'
+STYLES = (('P1', '-o'), ('P2', '-s'), ('Q1', '--o'), ('Q2', '--s'))
+
+
+def plot(source, target, error_key, xlabel, ylabel, absolute=False):
+    if not os.path.exists(source):
+        print('skipped', source)
+        return
+    rows = list(csv.DictReader(open(source)))
+    plt.figure(figsize=(6.5, 4.2))
+    for element, style in STYLES:
+        r = [x for x in rows if x['element'] == element]
+        if not r:
+            continue
+        errors = [abs(float(x[error_key])) if absolute else float(x[error_key]) for x in r]
+        plt.loglog(errors, [float(x['seconds']) for x in r], style, label=element)
+        for x, e in zip(r, errors):
+            plt.annotate(x['n_dofs'], (e, float(x['seconds'])), fontsize=6, xytext=(3, 3),
+                         textcoords='offset points')
+    plt.gca().invert_xaxis()
+    plt.xlabel(xlabel)
+    plt.ylabel(ylabel)
+    plt.grid(True, which='both', alpha=0.3)
+    plt.legend()
+    plt.tight_layout()
+    plt.savefig(target, dpi=120)
+    print('wrote', target)
+
+
+plot(f'{directory}/time_vs_error.csv', 'doc/figures/time_vs_error.png', 'rest_l2_error_relative',
+     'relative L2 error of the rest shape (inverse column)', 'wall time of the whole inverse solve (s)')
+plot(f'{directory}/brain/brain.csv', 'doc/figures/time_vs_error_brain.png', 'relative_rms_error',
+     'relative RMS nodal error against the reference (brain, forward)',
+     'wall time of the forward solve (s)')
+plot(f'{directory}/hertz.csv', 'doc/figures/time_vs_error_hertz.png', 'pressure_error',
+     '|peak contact pressure - Hertz p0| / p0', 'wall time of the solve (s)', absolute=True)

@@ -130,6 +130,11 @@ namespace RestShape
     /// along @p direction (m): the radius of the contact zone.
     double
     contact_radius(const dealii::Point<3> &point, const dealii::Tensor<1, 3> &direction) const;
+    /// contact_radius() about the axis through the centroid of the active
+    /// nodes along @p direction (m; 0 without active nodes): the radius of
+    /// a contact patch whose centre is not known in advance.
+    double
+    patch_radius(const dealii::Tensor<1, 3> &direction) const;
     unsigned int
     n_candidates() const;
     /// Candidates beyond the obstacle (gap < -g_tol), eligible or not.

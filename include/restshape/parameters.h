@@ -122,6 +122,7 @@ namespace RestShape
   {
     std::string directory;
     bool        write_vtu;
+    bool        write_nodal_csv;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

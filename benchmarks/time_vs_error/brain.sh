@@ -1,0 +1,97 @@
+#!/bin/bash
+# Benchmark: wall time against error on the brain (prm/brain.prm, one
+# forward solve from the image geometry, no inverse iteration), against a
+# much finer reference on the same geometry: the committed coarse mesh
+# refined globally (Mesh/Global refinements), so every run has the coarse
+# mesh's vertices as nodes and the displacements are compared there, node
+# by node, without interpolation (Output/Write nodal CSV).
+# Error: root mean square over the coarse vertices of |u - u_ref| (mm), its
+# maximum, and the RMS relative to the RMS of |u_ref|. Cases are
+# element:level, tetrahedra for P, hexahedra (each tetrahedron split into
+# four) for Q; the reference is a case of its own. Without SET the scene is
+# as in prm/brain.prm (skull contact, CSF pressure, elastic support).
+#
+# usage: benchmarks/time_vs_error/brain.sh [--coarse]
+#   --coarse: P1 level 0 against P1 level 1 (the version run in the tests)
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/time_vs_error),
+# CASES ("P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0"), REFERENCE (P2:2),
+# SET (one extra 'Section/Parameter=value', e.g. 'Contact/Obstacle file=').
+set -u
+exe=${RESTSHAPE:-build/restshape}
+out=${OUT:-output/benchmarks/time_vs_error}/brain
+cases=${CASES:-P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0}
+reference=${REFERENCE:-P2:2}
+if [ "${1:-}" = --coarse ]; then
+  cases=P1:0
+  reference=P1:1
+fi
+mkdir -p "$out"
+value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+
+run() { # element:level
+  local element=${1%%:*} level=${1##*:} cells=tetrahedra
+  [[ $element == Q* ]] && cells=hexahedra
+  local dir=$out/${element}_$level
+  rm -rf "$dir"
+  "$exe" --set "Output/Directory=$dir" --set "Output/Write VTU=false" --set "Output/Write nodal CSV=true" \
+    --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
+    --set "Solver/Linear solver=cg-amg" --set "Mesh/Cell type=$cells" \
+    --set "Discretization/Polynomial degree=${element:1:1}" --set "Mesh/Global refinements=$level" \
+    ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 ||
+    { echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"; return 1; }
+}
+
+echo "scene: prm/brain.prm${SET:+ with $SET}, forward; reference $reference; machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+status=0
+run "$reference" || exit 1
+for c in $cases; do
+  run "$c" || status=1
+done
+echo
+python3 - "$out" "$reference" $cases <<'PY' || status=1
+import csv, json, math, sys
+out, reference, cases = sys.argv[1], sys.argv[2], sys.argv[3:]
+def load(case):
+    d = f"{out}/{case.replace(':', '_')}"
+    nodes = {}
+    for r in csv.DictReader(open(f"{d}/nodes.csv")):
+        key = tuple(round(float(r[k]), 4) for k in ('x_mm', 'y_mm', 'z_mm'))
+        nodes[key] = [float(r[k]) for k in ('u_x_mm', 'u_y_mm', 'u_z_mm')]
+    return nodes, json.load(open(f"{d}/summary.json"))
+# The coarse mesh's vertices: the nodes of meshes/brain_coarse.msh.
+vertices = []
+with open('meshes/brain_coarse.msh') as f:
+    lines = f.read().split('\n')
+i = lines.index('$Nodes')
+if not lines[1].startswith('2.'):
+    raise SystemExit('meshes/brain_coarse.msh: expected a gmsh 2 file')
+n = int(lines[i + 1])
+for line in lines[i + 2:i + 2 + n]:
+    x = line.split()[1:4]
+    vertices.append(tuple(round(float(v), 4) for v in x))
+ref, ref_summary = load(reference)
+missing = [v for v in vertices if v not in ref]
+if missing:
+    raise SystemExit(f"{len(missing)} coarse vertices not found among the reference's nodes")
+ref_rms = math.sqrt(sum(sum(c * c for c in ref[v]) for v in vertices) / len(vertices))
+rows = [('element', 'level', 'n_dofs', 'seconds', 'newton_iterations', 'rms_error_mm', 'max_error_mm', 'relative_rms_error')]
+print(f"reference {reference}: {ref_summary['n_dofs']} DoFs, {ref_summary['wall_seconds']:.1f} s, "
+      f"RMS displacement at the {len(vertices)} coarse vertices {ref_rms:.4f} mm")
+print()
+print('| element | level | DoFs | seconds | Newton iterations | RMS error (mm) | max error (mm) | relative RMS error |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- |')
+for case in cases:
+    try:
+        nodes, s = load(case)
+    except OSError:
+        continue
+    e = [math.dist(nodes[v], ref[v]) for v in vertices]
+    rms = math.sqrt(sum(x * x for x in e) / len(e))
+    element, level = case.split(':')
+    rows.append((element, level, s['n_dofs'], s['wall_seconds'], s['newton_iterations'], rms, max(e), rms / ref_rms))
+    print(f"| {element} | {level} | {s['n_dofs']} | {s['wall_seconds']:.1f} | {s['newton_iterations']} | "
+          f"{rms:.3g} | {max(e):.3g} | {rms / ref_rms:.3g} |")
+with open(f"{out}/brain.csv", 'w') as f:
+    csv.writer(f).writerows(rows)
+PY
+exit $status
