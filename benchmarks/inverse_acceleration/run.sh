@@ -23,10 +23,10 @@ while [ $# -gt 0 ]; do
   shift
 done
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 
 echo "scene: $scene ${extra[*]:-}"
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "machine: $(machine)"
 echo
 echo "| update | tangent | converged | iterations | forward solves | Newton iterations | wall s | forward solves / paper | Newton / paper | time / paper |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"

@@ -39,7 +39,7 @@ mesh_file() {
     echo "$out/meshes/brain_$1.msh"
   fi
 }
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }
 
 run() { # name ranks mesh[+refinements] degree inverse
@@ -64,7 +64,7 @@ run() { # name ranks mesh[+refinements] degree inverse
     "$(share 'Contact search' "$dir.log")"
 }
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "machine: $(machine)"
 echo "run,ranks,n_dofs,seconds,newton_iterations,cg_per_newton,peak_rss_mb,assembly,linear_solve,contact_search" >"$out/scaling.csv"
 echo
 echo "| run | ranks | DoFs | seconds | microseconds per DoF | Newton iterations | CG iterations per Newton step | peak memory (MB) | inverse iterations | time: assembly / linear solve / contact search |"

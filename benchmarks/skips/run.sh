@@ -18,10 +18,10 @@ out=${OUT:-output/benchmarks/skips}
 inverse=true
 [ "${1:-}" = --coarse ] && inverse=false
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 section() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/[ s]/, "", $4); print $4 }'; }
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); inverse: $inverse"
+echo "machine: $(machine); inverse: $inverse"
 echo
 echo "| variant | seconds | ratio to full | output (s) | contact search (s) |"
 echo "| --- | --- | --- | --- | --- |"

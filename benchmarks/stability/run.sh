@@ -35,11 +35,11 @@ if [ "${1:-}" = --coarse ]; then
   degrees=${DEGREES:-1}
 fi
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/' | tr -d '"'; }
+source "$(dirname "$0")/../common.sh"
 
 table=$out/stability.md
 {
-  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+  echo "machine: $(machine)"
   echo
   echo "| nu | contrast | gravity x | P | result | sag (mm) | inverse iterations | Newton iterations | mean / max error (mm) | seconds | diagnostic |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"

@@ -26,7 +26,7 @@ if [ "${1:-}" = --coarse ]; then
   reference=P1:1
 fi
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 
 run() { # element:level
   local element=${1%%:*} level=${1##*:} cells=tetrahedra
@@ -41,7 +41,7 @@ run() { # element:level
     { echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"; return 1; }
 }
 
-echo "scene: prm/brain.prm${SET:+ with $SET}, forward; reference $reference; machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "scene: prm/brain.prm${SET:+ with $SET}, forward; reference $reference; machine: $(machine)"
 status=0
 run "$reference" || exit 1
 for c in $cases; do

@@ -30,14 +30,13 @@ if [ "${1:-}" = --coarse ]; then
   elements=Q1
 fi
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 
 csv=$out/hertz.csv
-echo "element,level,n_cells,n_dofs,seconds,force_N,radius_mm,hertz_radius_mm,radius_error,max_pressure_Pa,hertz_pressure_Pa,pressure_error,newton_iterations" >"$csv"
-echo "scene: prm/hertz.prm; machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo
-echo "| element | level | cells | DoFs | seconds | F (N) | radius (mm) | Hertz a (mm) | radius error | peak pressure (Pa) | Hertz p0 (Pa) | pressure error | Newton iterations |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "scene: prm/hertz.prm; machine: $(machine)"
+start_table "$csv" element,level,n_cells,n_dofs,seconds,force_N,radius_mm,hertz_radius_mm,radius_error,max_pressure_Pa,hertz_pressure_Pa,pressure_error,newton_iterations \
+  element level cells DoFs seconds "F (N)" "radius (mm)" "Hertz a (mm)" "radius error" \
+  "peak pressure (Pa)" "Hertz p0 (Pa)" "pressure error" "Newton iterations"
 status=0
 for element in $elements; do
   degree=${element:1:1}

@@ -24,14 +24,12 @@ if [ "${1:-}" = --coarse ]; then
   levels=([P1]=0 [P2]=0 [Q1]=0 [Q2]=0)
 fi
 mkdir -p "$out"
-value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/'; }
+source "$(dirname "$0")/../common.sh"
 
 csv=$out/time_vs_error.csv
-echo "element,level,n_cells,n_dofs,seconds,rest_l2_error_relative,rest_h1_error_relative,inverse_iterations" >"$csv"
-echo "scene: $scene; machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo
-echo "| element | level | cells | DoFs | seconds | rest L2 error (rel.) | rest H1 error (rel.) | inverse iterations |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "scene: $scene; machine: $(machine)"
+start_table "$csv" element,level,n_cells,n_dofs,seconds,rest_l2_error_relative,rest_h1_error_relative,inverse_iterations \
+  element level cells DoFs seconds "rest L2 error (rel.)" "rest H1 error (rel.)" "inverse iterations"
 status=0
 for element in P1 P2 Q1 Q2; do
   case $element in

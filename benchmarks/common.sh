@@ -1,0 +1,21 @@
+# Shell helpers shared by the benchmark scripts (sourced, not run).
+
+# value KEY FILE: the first value of KEY in a summary.json (strings without
+# their quotes).
+value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/' | tr -d '"'; }
+
+# machine: "N cores, CPU model" of this machine.
+machine() { echo "$(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"; }
+
+# start_table CSV CSV_HEADER MARKDOWN_COLUMN...: write the CSV's header line
+# and print a blank line and a markdown table header with these columns.
+start_table() {
+  local csv=$1 header=$2 line='|' rule='|' column
+  shift 2
+  echo "$header" >"$csv"
+  for column in "$@"; do
+    line+=" $column |"
+    rule+=" --- |"
+  done
+  printf '\n%s\n%s\n' "$line" "$rule"
+}
