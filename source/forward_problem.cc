@@ -683,7 +683,7 @@ namespace RestShape
     const LoadState  start_load = current_load;
     const VectorType w_start    = w;
     VectorType       d_converged = d;
-    double           s_done = 0, ds = 1;
+    double           s_done = 0, ds = 1. / parameters.solver.initial_load_steps;
     unsigned int     halvings = 0;
     ContactProblem::State contact_converged;
     if (contact != nullptr)

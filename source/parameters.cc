@@ -339,6 +339,14 @@ namespace RestShape
                       "When Newton fails, the load (or rest-shape change) "
                       "increment is halved at most this many times before "
                       "the solve is declared failed.");
+    prm.declare_entry("Initial load steps",
+                      "1",
+                      Patterns::Integer(1, 1024),
+                      "Every solve starts with an increment of 1/N of the "
+                      "load (or rest-shape change); after each converged "
+                      "increment the next one doubles, up to the whole. "
+                      "Raise it for very fine meshes whose first Newton "
+                      "steps at the full load invert cells.");
     prm.leave_subsection();
   }
 
@@ -353,6 +361,7 @@ namespace RestShape
     max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
     linear_tolerance       = prm.get_double("Linear solver tolerance");
     max_load_step_halvings = prm.get_integer("Maximum load step halvings");
+    initial_load_steps     = prm.get_integer("Initial load steps");
     prm.leave_subsection();
     if (!(newton_tolerance > 0))
       throw InputError("",

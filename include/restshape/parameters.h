@@ -111,6 +111,7 @@ namespace RestShape
     unsigned int     max_newton_iterations;
     double           linear_tolerance;
     unsigned int     max_load_step_halvings;
+    unsigned int     initial_load_steps;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
