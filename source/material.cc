@@ -7,6 +7,19 @@ namespace RestShape
 {
   using namespace dealii;
 
+  Tensor2
+  skew_matrix(const Tensor<1, 3> &w)
+  {
+    Tensor2 W;
+    W[0][1] = -w[2];
+    W[0][2] = w[1];
+    W[1][0] = w[2];
+    W[1][2] = -w[0];
+    W[2][0] = -w[1];
+    W[2][1] = w[0];
+    return W;
+  }
+
   bool
   polar_decomposition(const Tensor2 &F, Tensor2 &R, Tensor2 &S)
   {
@@ -54,20 +67,8 @@ namespace RestShape
         const double value = (2 * mu * (s_ij - 2) + 2 * lambda * tr_E) / s_ij;
         if (value >= 0)
           continue;
-        const Tensor<1, 3> &q = eig[k].second;
-        Tensor2             W;
-        W[0][1] = -q[2];
-        W[0][2] = q[1];
-        W[1][0] = q[2];
-        W[1][2] = -q[0];
-        W[2][0] = -q[1];
-        W[2][1] = q[0];
-        const Tensor2 D = (1. / std::sqrt(2.)) * (R * W);
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int J = 0; J < 3; ++J)
-            for (unsigned int k2 = 0; k2 < 3; ++k2)
-              for (unsigned int L = 0; L < 3; ++L)
-                A[i][J][k2][L] -= value * D[i][J] * D[k2][L];
+        const Tensor2 D = (1. / std::sqrt(2.)) * (R * skew_matrix(eig[k].second));
+        A -= value * outer_product(D, D);
       }
   }
 
@@ -117,15 +118,7 @@ namespace RestShape
               a[0]                 = skew[2][1];
               a[1]                 = skew[0][2];
               a[2]                 = skew[1][0];
-              const Tensor<1, 3> w = M * a;
-              Tensor2            W;
-              W[0][1] = -w[2];
-              W[0][2] = w[1];
-              W[1][0] = w[2];
-              W[1][2] = -w[0];
-              W[2][0] = -w[1];
-              W[2][1] = w[0];
-              const Tensor2 dR = R * W;
+              const Tensor2 dR = R * skew_matrix(M * a);
               dP               = (lambda * tr_E - 2 * mu) * dR +
                    lambda * trace(Z) * R;
               dP[k][L] += 2 * mu;

@@ -17,6 +17,10 @@ namespace RestShape
   using Tensor2 = dealii::Tensor<2, 3>;
   using Tensor4 = dealii::Tensor<4, 3>;
 
+  /// The skew matrix W with W v = w x v.
+  Tensor2
+  skew_matrix(const dealii::Tensor<1, 3> &w);
+
   /**
    * Polar decomposition F = R S with R a proper rotation and S symmetric,
    * by Higham's scaled Newton iteration. Returns false (and leaves R, S

@@ -29,14 +29,7 @@ namespace
   {
     // Rodrigues' formula.
     const double angle = axis_angle.norm();
-    const auto   k     = axis_angle / angle;
-    Tensor2      K;
-    K[0][1] = -k[2];
-    K[0][2] = k[1];
-    K[1][0] = k[2];
-    K[1][2] = -k[0];
-    K[2][0] = -k[1];
-    K[2][1] = k[0];
+    const Tensor2 K     = skew_matrix(axis_angle / angle);
     return Tensor2(unit_symmetric_tensor<3>()) + std::sin(angle) * K +
            (1 - std::cos(angle)) * K * K;
   }
