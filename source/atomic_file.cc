@@ -1,6 +1,5 @@
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
-
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,9 +11,9 @@
 namespace RestShape
 {
   void
-  write_file_atomically(const std::string &                        path,
+  write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write,
-                        const std::string &                        parameter)
+                        const std::string                         &parameter)
   {
     const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
     {
@@ -29,29 +28,31 @@ namespace RestShape
       if (!out)
         {
           std::remove(tmp.c_str());
-          throw InputError(path,
-                           parameter,
-                           "writing failed (disk full?)");
+          throw InputError(path, parameter, "writing failed (disk full?)");
         }
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0)
       {
         const std::string reason = std::strerror(errno);
         std::remove(tmp.c_str());
-        throw InputError(path, parameter, "cannot rename into place: " + reason);
+        throw InputError(path,
+                         parameter,
+                         "cannot rename into place: " + reason);
       }
   }
 
   void
-  write_named_file_atomically(const std::string &                              path,
-                              const std::function<bool(const std::string &)> &write,
-                              const std::string &                              parameter,
-                              const std::string &                              message)
+  write_named_file_atomically(
+    const std::string                              &path,
+    const std::function<bool(const std::string &)> &write,
+    const std::string                              &parameter,
+    const std::string                              &message)
   {
     namespace fs = std::filesystem;
     const fs::path target(path);
     const fs::path tmp =
-      target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
+      target.parent_path() /
+      (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
     std::error_code ec;
     if (!write(tmp.string()) || !fs::exists(tmp, ec))
       {
@@ -62,7 +63,9 @@ namespace RestShape
     if (ec)
       {
         fs::remove(tmp, ec);
-        throw InputError(path, parameter, "cannot rename into place: " + ec.message());
+        throw InputError(path,
+                         parameter,
+                         "cannot rename into place: " + ec.message());
       }
   }
 

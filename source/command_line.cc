@@ -39,7 +39,9 @@ namespace RestShape
         x = 0;
       }
     if (!(x > 0))
-      throw InputError("", option, "expected a positive number, got '" + text + "'");
+      throw InputError("",
+                       option,
+                       "expected a positive number, got '" + text + "'");
     return x;
   }
 
@@ -48,8 +50,12 @@ namespace RestShape
   {
     const auto items = dealii::Utilities::split_string_list(text, ',');
     if (items.size() != 3)
-      throw InputError("", option, "expected three comma-separated numbers, got '" + text + "'");
-    return {{parse_number(option, items[0]), parse_number(option, items[1]),
+      throw InputError("",
+                       option,
+                       "expected three comma-separated numbers, got '" + text +
+                         "'");
+    return {{parse_number(option, items[0]),
+             parse_number(option, items[1]),
              parse_number(option, items[2])}};
   }
 } // namespace RestShape

@@ -13,11 +13,12 @@ namespace RestShape
   using namespace dealii;
 
   ContactProblem::ContactProblem(const ContactParameters &parameters,
-                                 const ForwardProblem &   forward,
-                                 TimerOutput &            timer)
+                                 const ForwardProblem    &forward,
+                                 TimerOutput             &timer)
     // Gaps are resolved as tightly as the residual (relative to the body's
     // size), but never tighter than 1e-10 of it.
-    : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) * forward.mesh().diameter())
+    : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) *
+                    forward.mesh().diameter())
     , parameters(parameters)
     , forward(forward)
     , timer(timer)
@@ -34,7 +35,7 @@ namespace RestShape
   ContactProblem::setup()
   {
     TimerOutput::Scope scope(timer, "Contact search");
-    const auto &fe = forward.fe();
+    const auto        &fe = forward.fe();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     const auto &nodes = forward.relevant_nodes();
     for (unsigned int n = 0; n < nodes.size(); ++n)
@@ -43,15 +44,19 @@ namespace RestShape
     candidates.clear();
     faces.clear();
     std::map<types::global_dof_index, unsigned int> candidate_of_dof;
-    FEFaceValues<3> fv(forward.mapping(), fe, forward.face_quadrature(),
-                       update_values | update_JxW_values | update_normal_vectors);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    FEFaceValues<3>                                 fv(forward.mapping(),
+                       fe,
+                       forward.face_quadrature(),
+                       update_values | update_JxW_values |
+                         update_normal_vectors);
+    std::vector<types::global_dof_index>            dofs(fe.n_dofs_per_cell());
     const auto &constraints = forward.base_constraints();
 
     for (const auto &cell : forward.dof_handler().active_cell_iterators())
       {
         if (cell->is_artificial() ||
-            (!parameters.labels.empty() && !parameters.labels.count(cell->material_id())))
+            (!parameters.labels.empty() &&
+             !parameters.labels.count(cell->material_id())))
           continue;
         for (const unsigned int f : cell->face_indices())
           {
@@ -78,7 +83,8 @@ namespace RestShape
                 double m = 0, a = 0;
                 for (const unsigned int q : fv.quadrature_point_indices())
                   {
-                    m += fv.shape_value(i, q) * fv.shape_value(i, q) * fv.JxW(q);
+                    m +=
+                      fv.shape_value(i, q) * fv.shape_value(i, q) * fv.JxW(q);
                     a += fv.shape_value(i, q) * fv.JxW(q);
                   }
                 if (m <= 1e-12 * face_area)
@@ -91,7 +97,8 @@ namespace RestShape
                 for (unsigned int c = 0; c < 3; ++c)
                   {
                     fixed[c] = forward.is_fixed(node.dofs[c]);
-                    hanging |= constraints.is_constrained(node.dofs[c]) && !fixed[c];
+                    hanging |=
+                      constraints.is_constrained(node.dofs[c]) && !fixed[c];
                   }
                 if (hanging || (fixed[0] && fixed[1] && fixed[2]))
                   continue;
@@ -101,8 +108,10 @@ namespace RestShape
                     Candidate c;
                     c.node  = node;
                     c.fixed = fixed;
-                    c.owned = forward.locally_owned_dofs().is_element(node.dofs[0]);
-                    it      = candidate_of_dof.emplace(dofs[i], candidates.size()).first;
+                    c.owned =
+                      forward.locally_owned_dofs().is_element(node.dofs[0]);
+                    it = candidate_of_dof.emplace(dofs[i], candidates.size())
+                           .first;
                     candidates.push_back(c);
                   }
                 face.nodes.push_back(it->second);
@@ -123,7 +132,8 @@ namespace RestShape
       }
 
     h_min    = forward.mesh().minimum_cell_diameter();
-    c_scaled = parameters.active_set_constant * forward.materials().max_youngs_modulus() / h_min;
+    c_scaled = parameters.active_set_constant *
+               forward.materials().max_youngs_modulus() / h_min;
     history.clear();
   }
 
@@ -137,7 +147,8 @@ namespace RestShape
   }
 
   double
-  ContactProblem::contact_force(const Candidate &c, const VectorType &raw_residual) const
+  ContactProblem::contact_force(const Candidate  &c,
+                                const VectorType &raw_residual) const
   {
     // At equilibrium f_ext - f_int + lambda n = 0 at the node.
     double lambda = 0;
@@ -151,7 +162,8 @@ namespace RestShape
   {
     // The owner of a node decides; ghost copies follow, so that every
     // process builds the same constraints.
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
       return;
     VectorType flags(forward.locally_owned_dofs(), comm);
@@ -159,7 +171,9 @@ namespace RestShape
       if (c.owned)
         flags[c.node.dofs[0]] = (c.active ? 1 : 0) + (c.eligible ? 2 : 0);
     flags.compress(VectorOperation::insert);
-    VectorType ghosted(forward.locally_owned_dofs(), forward.locally_relevant_dofs(), comm);
+    VectorType ghosted(forward.locally_owned_dofs(),
+                       forward.locally_relevant_dofs(),
+                       comm);
     ghosted = flags;
     for (Candidate &c : candidates)
       if (!c.owned)
@@ -180,16 +194,16 @@ namespace RestShape
     n_updates = n_thaws = 0;
     for (Candidate &c : candidates)
       {
-        const Point<3> x  = position(c, d);
-        const Gap      g  = obstacle->gap(x);
-        c.gap             = g.gap;
-        c.normal          = g.normal;
+        const Point<3> x    = position(c, d);
+        const Gap      g    = obstacle->gap(x);
+        c.gap               = g.gap;
+        c.normal            = g.normal;
         c.previous_position = x;
         // Warm start: the active set of the last solve, for nodes that are
         // on the allowed side and within a cell size of the obstacle now.
-        c.eligible = g.gap >= -gap_tolerance;
-        c.active   = c.active && c.eligible && g.gap < h_min;
-        c.pulled   = false;
+        c.eligible       = g.gap >= -gap_tolerance;
+        c.active         = c.active && c.eligible && g.gap < h_min;
+        c.pulled         = false;
         c.normal_locked  = false;
         c.normal_changes = 0;
       }
@@ -227,7 +241,8 @@ namespace RestShape
                                     const bool        first_iteration)
   {
     TimerOutput::Scope scope(timer, "Contact search");
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm     comm =
+      forward.dof_handler().get_triangulation().get_communicator();
     n_added = n_released = 0;
     std::size_t hash     = 0;
     for (Candidate &c : candidates)
@@ -256,7 +271,8 @@ namespace RestShape
               }
           }
         if (c.owned && !c.eligible &&
-            (g.gap >= -gap_tolerance || obstacle->n_crossings(c.previous_position, x) >= 2))
+            (g.gap >= -gap_tolerance ||
+             obstacle->n_crossings(c.previous_position, x) >= 2))
           c.eligible = true;
         c.previous_position = x;
         if (!c.owned)
@@ -267,9 +283,10 @@ namespace RestShape
           {
             // Pressure of an active node; no release on the first iteration
             // (the residual is that of another state).
-            const double p = !c.active ? 0. :
-                             first_iteration ? std::numeric_limits<double>::max() :
-                                               contact_force(c, raw_residual) / c.area_lumped;
+            const double p =
+              !c.active       ? 0. :
+              first_iteration ? std::numeric_limits<double>::max() :
+                                contact_force(c, raw_residual) / c.area_lumped;
             now_active = p - c_scaled * (c.gap - gap_tolerance) > 0;
             // A node released for pulling (thaw_if_adhesive) comes back
             // only if it goes through the obstacle.
@@ -282,12 +299,13 @@ namespace RestShape
         n_released += (!now_active && c.active);
         c.active = now_active;
         if (now_active)
-          hash += std::hash<types::global_dof_index>()(c.node.dofs[0]) * 2654435761u;
+          hash +=
+            std::hash<types::global_dof_index>()(c.node.dofs[0]) * 2654435761u;
       }
     share_flags();
-    n_added    = Utilities::MPI::sum(n_added, comm);
-    n_released = Utilities::MPI::sum(n_released, comm);
-    hash       = Utilities::MPI::sum(hash, comm);
+    n_added            = Utilities::MPI::sum(n_added, comm);
+    n_released         = Utilities::MPI::sum(n_released, comm);
+    hash               = Utilities::MPI::sum(hash, comm);
     const bool changed = n_added + n_released > 0;
     // Cycling: an active set seen before in this solve comes back. Then
     // nodes may still be added but no longer released, which ends the cycle.
@@ -327,9 +345,10 @@ namespace RestShape
           else
             push += force;
         }
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
-    push                = Utilities::MPI::sum(push, comm);
-    pull                = Utilities::MPI::sum(pull, comm);
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
+    push = Utilities::MPI::sum(push, comm);
+    pull = Utilities::MPI::sum(pull, comm);
     if (pull <= 1e-3 * push)
       return false;
     for (const unsigned int i : pulling)
@@ -338,8 +357,9 @@ namespace RestShape
         candidates[i].pulled = true;
       }
     share_flags();
-    n_released = Utilities::MPI::sum(static_cast<unsigned int>(pulling.size()), comm);
-    n_added    = 0;
+    n_released =
+      Utilities::MPI::sum(static_cast<unsigned int>(pulling.size()), comm);
+    n_added = 0;
     ++n_thaws;
     return true;
   }
@@ -357,24 +377,26 @@ namespace RestShape
           if (rate < 0)
             alpha = std::min(alpha, std::max(c.gap + 0.25 * h_min, 0.) / -rate);
         }
-    return Utilities::MPI::min(alpha, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::min(
+      alpha, forward.dof_handler().get_triangulation().get_communicator());
   }
 
   void
-  ContactProblem::add_constraints(AffineConstraints<double> &      constraints,
+  ContactProblem::add_constraints(AffineConstraints<double>       &constraints,
                                   const AffineConstraints<double> &base) const
   {
     for (const Candidate &c : candidates)
       {
         if (!c.active)
           continue;
-        const auto &dofs = c.node.dofs;
+        const auto         &dofs = c.node.dofs;
         std::array<bool, 3> free;
         int                 k = -1;
         for (unsigned int j = 0; j < 3; ++j)
           {
             free[j] = !c.fixed[j] && !base.is_constrained(dofs[j]);
-            if (free[j] && (k < 0 || std::abs(c.normal[j]) > std::abs(c.normal[k])))
+            if (free[j] &&
+                (k < 0 || std::abs(c.normal[j]) > std::abs(c.normal[k])))
               k = j;
           }
         // A node that can only move (almost) tangentially cannot be pushed
@@ -396,16 +418,19 @@ namespace RestShape
     bool ok = true;
     for (const Candidate &c : candidates)
       if (c.owned && c.eligible)
-        ok = ok && c.gap >= -gap_tolerance && (!c.active || std::abs(c.gap) <= gap_tolerance);
-    return Utilities::MPI::min(ok ? 1 : 0,
-                               forward.dof_handler().get_triangulation().get_communicator()) == 1;
+        ok = ok && c.gap >= -gap_tolerance &&
+             (!c.active || std::abs(c.gap) <= gap_tolerance);
+    return Utilities::MPI::min(
+             ok ? 1 : 0,
+             forward.dof_handler().get_triangulation().get_communicator()) == 1;
   }
 
   std::string
   ContactProblem::progress_text() const
   {
-    return ", contact " + std::to_string(n_active()) + " active (+" + std::to_string(n_added) +
-           " -" + std::to_string(n_released) + ")" + (releases_frozen ? " [cycling: releases frozen]" : "");
+    return ", contact " + std::to_string(n_active()) + " active (+" +
+           std::to_string(n_added) + " -" + std::to_string(n_released) + ")" +
+           (releases_frozen ? " [cycling: releases frozen]" : "");
   }
 
   unsigned int
@@ -414,7 +439,8 @@ namespace RestShape
     unsigned int n = 0;
     for (const Candidate &c : candidates)
       n += (c.owned && c.active);
-    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::sum(
+      n, forward.dof_handler().get_triangulation().get_communicator());
   }
 
   unsigned int
@@ -423,7 +449,8 @@ namespace RestShape
     unsigned int n = 0;
     for (const Candidate &c : candidates)
       n += c.owned;
-    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::sum(
+      n, forward.dof_handler().get_triangulation().get_communicator());
   }
 
   unsigned int
@@ -432,7 +459,8 @@ namespace RestShape
     unsigned int n = 0;
     for (const Candidate &c : candidates)
       n += (c.owned && c.gap < -gap_tolerance);
-    return Utilities::MPI::sum(n, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::sum(
+      n, forward.dof_handler().get_triangulation().get_communicator());
   }
 
   Tensor<1, 3>
@@ -442,7 +470,8 @@ namespace RestShape
     for (const Candidate &c : candidates)
       if (c.owned && c.active)
         force += contact_force(c, raw_residual) * c.normal;
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
     for (unsigned int k = 0; k < 3; ++k)
       force[k] = Utilities::MPI::sum(force[k], comm);
     return force;
@@ -455,7 +484,9 @@ namespace RestShape
     for (const Candidate &c : candidates)
       if (c.owned && (c.eligible || !eligible_only))
         p = std::max(p, -c.gap);
-    return Utilities::MPI::max(p, forward.dof_handler().get_triangulation().get_communicator()) + 0.;
+    return Utilities::MPI::max(
+             p, forward.dof_handler().get_triangulation().get_communicator()) +
+           0.;
   }
 
   std::vector<double>
@@ -498,7 +529,8 @@ namespace RestShape
     std::vector<unsigned int> count(n, 0);
     for (const Face &face : faces)
       for (const unsigned int i : face.nodes)
-        if (in_face[i] && !direct(i) && face.normal * candidates[i].normal <= -0.5)
+        if (in_face[i] && !direct(i) &&
+            face.normal * candidates[i].normal <= -0.5)
           for (const unsigned int j : face.nodes)
             if (direct(j))
               {
@@ -522,14 +554,16 @@ namespace RestShape
           low  = std::min(low, pressure[i]);
           high = std::max(high, pressure[i]);
         }
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
     low  = Utilities::MPI::min(low, comm);
     high = Utilities::MPI::max(high, comm);
     return high < low ? std::make_pair(0., 0.) : std::make_pair(low, high);
   }
 
   double
-  ContactProblem::contact_radius(const Point<3> &point, const Tensor<1, 3> &direction) const
+  ContactProblem::contact_radius(const Point<3>     &point,
+                                 const Tensor<1, 3> &direction) const
   {
     const Tensor<1, 3> axis   = direction / direction.norm();
     double             radius = 0;
@@ -537,17 +571,19 @@ namespace RestShape
       if (c.owned && c.active)
         {
           const Tensor<1, 3> r = c.node.position - point;
-          radius               = std::max(radius, (r - (r * axis) * axis).norm());
+          radius = std::max(radius, (r - (r * axis) * axis).norm());
         }
-    return Utilities::MPI::max(radius, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::max(
+      radius, forward.dof_handler().get_triangulation().get_communicator());
   }
 
   double
   ContactProblem::patch_radius(const Tensor<1, 3> &direction) const
   {
-    const MPI_Comm comm = forward.dof_handler().get_triangulation().get_communicator();
-    Tensor<1, 3>   sum;
-    double         n = 0;
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
+    Tensor<1, 3> sum;
+    double       n = 0;
     for (const Candidate &c : candidates)
       if (c.owned && c.active)
         {
@@ -562,10 +598,11 @@ namespace RestShape
   }
 
   VectorType
-  ContactProblem::nodal_fields(const VectorType &raw_residual, const double length_scale) const
+  ContactProblem::nodal_fields(const VectorType &raw_residual,
+                               const double      length_scale) const
   {
     const std::vector<double> pressure = pressures(raw_residual);
-    VectorType fields = forward.zero_vector();
+    VectorType                fields   = forward.zero_vector();
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned)
         {

@@ -44,10 +44,10 @@ namespace RestShape
 
   struct ForwardProblem::ScratchData
   {
-    ScratchData(const Mapping<3> &      mapping,
+    ScratchData(const Mapping<3>       &mapping,
                 const FiniteElement<3> &fe,
-                const Quadrature<3> &   quadrature,
-                const Quadrature<2> &   face_quadrature)
+                const Quadrature<3>    &quadrature,
+                const Quadrature<2>    &face_quadrature)
       : fe_values(mapping,
                   fe,
                   quadrature,
@@ -72,12 +72,12 @@ namespace RestShape
                     other.fe_face_values.get_quadrature())
     {}
 
-    FEValues<3>              fe_values;
-    FEFaceValues<3>          fe_face_values;
-    std::vector<Tensor2>     grad_d, grad_w;
+    FEValues<3>               fe_values;
+    FEFaceValues<3>           fe_face_values;
+    std::vector<Tensor2>      grad_d, grad_w;
     std::vector<Tensor<1, 3>> face_d, face_w;
     std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
-    std::vector<Tensor2>     v;  // A : (e_c (x) b_j), per shape function j
+    std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
   };
 
   struct ForwardProblem::CopyData
@@ -93,17 +93,17 @@ namespace RestShape
     Vector<double>                       cell_rhs;      // f_ext - f_int
     Vector<double>                       cell_external; // f_ext
     std::vector<types::global_dof_index> dofs;
-    bool                                 valid  = true;
-    double                               energy = 0; // int W dV_rest - f_ext . d
+    bool                                 valid = true;
+    double energy                              = 0; // int W dV_rest - f_ext . d
   };
 
   // ------------------------------------------------------------------
 
-  ForwardProblem::ForwardProblem(const Parameters &   parameters,
-                                 LabelledMesh &       mesh,
+  ForwardProblem::ForwardProblem(const Parameters    &parameters,
+                                 LabelledMesh        &mesh,
                                  const MaterialTable &materials,
-                                 TimerOutput &        timer,
-                                 ConditionalOStream & pcout)
+                                 TimerOutput         &timer,
+                                 ConditionalOStream  &pcout)
     : parameters(parameters)
     , labelled_mesh(mesh)
     , material_table(materials)
@@ -120,14 +120,14 @@ namespace RestShape
     const unsigned int degree = parameters.discretization.degree;
     if (mesh.is_simplex())
       {
-        mapping_        = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
-        cell_quadrature = QGaussSimplex<3>(degree + 1);
+        mapping_         = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
+        cell_quadrature  = QGaussSimplex<3>(degree + 1);
         face_quadrature_ = QGaussSimplex<2>(degree + 1);
       }
     else
       {
-        mapping_        = std::make_unique<MappingQ<3>>(1);
-        cell_quadrature = QGauss<3>(degree + 1);
+        mapping_         = std::make_unique<MappingQ<3>>(1);
+        cell_quadrature  = QGauss<3>(degree + 1);
         face_quadrature_ = QGauss<2>(degree + 1);
       }
   }
@@ -197,8 +197,9 @@ namespace RestShape
     pressure_labels = labels_or_unfixed(parameters.loads.pressure_labels);
     support_labels  = labels_or_unfixed(parameters.boundary.support_labels);
 
-    linear_solver = std::make_unique<LinearSolver>(
-      parameters.solver, parameters.discretization.degree);
+    linear_solver =
+      std::make_unique<LinearSolver>(parameters.solver,
+                                     parameters.discretization.degree);
     if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
   }
@@ -243,7 +244,8 @@ namespace RestShape
     // deal.II 9.4 has no hanging nodes on simplices (and crashes when asked
     // for them); tetrahedral meshes are only refined globally.
     if (!labelled_mesh.is_simplex())
-      DoFTools::make_hanging_node_constraints(dof_handler_, constraints_hanging);
+      DoFTools::make_hanging_node_constraints(dof_handler_,
+                                              constraints_hanging);
     constraints_hanging.close();
 
     constraints_base.clear();
@@ -308,7 +310,7 @@ namespace RestShape
             for (unsigned int axis = 0; axis < 3; ++axis)
               {
                 Tensor<1, 3> e;
-                e[axis]             = 1;
+                e[axis]            = 1;
                 modes[3 + axis][i] = cross_product_3d(e, r)[c];
               }
           }
@@ -322,13 +324,13 @@ namespace RestShape
   void
   ForwardProblem::local_assemble(
     const typename DoFHandler<3>::active_cell_iterator &cell,
-    ScratchData &                                       scratch,
-    CopyData &                                          copy,
+    ScratchData                                        &scratch,
+    CopyData                                           &copy,
     const Assemble                                      what) const
   {
-    const unsigned int n_dofs = fe_.n_dofs_per_cell();
-    const bool         matrix = (what == Assemble::residual_and_matrix);
-    FEValues<3> &      fe_values = scratch.fe_values;
+    const unsigned int n_dofs    = fe_.n_dofs_per_cell();
+    const bool         matrix    = (what == Assemble::residual_and_matrix);
+    FEValues<3>       &fe_values = scratch.fe_values;
     fe_values.reinit(cell);
     cell->get_dof_indices(copy.dofs);
     copy.cell_rhs      = 0;
@@ -362,11 +364,7 @@ namespace RestShape
         const Tensor2 G_inv = invert(G);
         const Tensor2 F     = (I + scratch.grad_d[q]) * G_inv;
         if (!(det_G > 0) ||
-            !law.evaluate(F,
-                          P,
-                          matrix ? &A : nullptr,
-                          tangent_type,
-                          &W))
+            !law.evaluate(F, P, matrix ? &A : nullptr, tangent_type, &W))
           {
             copy.valid = false;
             return;
@@ -389,7 +387,7 @@ namespace RestShape
         for (unsigned int j = 0; j < n_dofs; ++j)
           {
             const unsigned int cj = fe_.system_to_component_index(j).first;
-            Tensor2 &          v  = scratch.v[j];
+            Tensor2           &v  = scratch.v[j];
             for (unsigned int c = 0; c < 3; ++c)
               for (unsigned int K = 0; K < 3; ++K)
                 {
@@ -447,18 +445,21 @@ namespace RestShape
             fv[u].get_function_values(w_ghost, scratch.face_w);
             for (const unsigned int q : fv.quadrature_point_indices())
               {
-                const Tensor<1, 3> u_rest = scratch.face_d[q] - scratch.face_w[q];
-                const double       JxW    = fv.JxW(q);
+                const Tensor<1, 3> u_rest =
+                  scratch.face_d[q] - scratch.face_w[q];
+                const double JxW = fv.JxW(q);
                 copy.energy += 0.5 * k * u_rest.norm_square() * JxW;
                 for (unsigned int i = 0; i < n_dofs; ++i)
                   {
-                    const unsigned int ci  = fe_.system_to_component_index(i).first;
-                    const double       phi = fv.shape_value(i, q);
+                    const unsigned int ci =
+                      fe_.system_to_component_index(i).first;
+                    const double phi = fv.shape_value(i, q);
                     copy.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
                     if (matrix)
                       for (unsigned int j = 0; j < n_dofs; ++j)
                         if (fe_.system_to_component_index(j).first == ci)
-                          copy.cell_matrix(i, j) += k * phi * fv.shape_value(j, q) * JxW;
+                          copy.cell_matrix(i, j) +=
+                            k * phi * fv.shape_value(j, q) * JxW;
                   }
               }
           }
@@ -473,16 +474,16 @@ namespace RestShape
   {
     TimerOutput::Scope scope(timer, "Assembly");
     const bool         matrix = (what == Assemble::residual_and_matrix);
-    residual_raw       = 0;
-    residual_condensed = 0;
-    external_condensed = 0;
+    residual_raw              = 0;
+    residual_condensed        = 0;
+    external_condensed        = 0;
     if (matrix)
       {
         tangent    = 0;
         rhs_newton = 0;
       }
-    bool all_valid = true;
-    double energy  = 0;
+    bool   all_valid = true;
+    double energy    = 0;
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
     WorkStream::run(
@@ -542,14 +543,16 @@ namespace RestShape
     // adaptive: the consistent tangent, but after a step the line search
     // had to shorten, one step with the projected one.
     const TangentType chosen = parameters.discretization.tangent;
-    tangent_type = chosen == TangentType::adaptive ? TangentType::consistent : chosen;
+    tangent_type =
+      chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
          ++it)
       {
         bool set_changed = false;
         if (contact != nullptr)
           {
-            set_changed = contact->update_active_set(d_ghost, residual_raw, it == 1);
+            set_changed =
+              contact->update_active_set(d_ghost, residual_raw, it == 1);
             stats.active_set_changes += set_changed;
           }
         make_newton_constraints();
@@ -596,11 +599,12 @@ namespace RestShape
         const double     energy_start = total_energy;
         const double     slope        = -(residual_condensed * newton_update);
         const VectorType d_start      = d;
-        const double     alpha_max = contact != nullptr ? contact->max_step(newton_update) : 1.;
-        double           alpha     = alpha_max;
-        bool             accepted     = false;
-        double           trial_residual = 0;
-        unsigned int     inverted_trials = 0;
+        const double     alpha_max =
+          contact != nullptr ? contact->max_step(newton_update) : 1.;
+        double       alpha           = alpha_max;
+        bool         accepted        = false;
+        double       trial_residual  = 0;
+        unsigned int inverted_trials = 0;
         for (unsigned int ls = 0; ls < 12 && !accepted; ++ls, alpha *= 0.5)
           {
             d = d_start;
@@ -612,11 +616,11 @@ namespace RestShape
                 continue;
               }
             trial_residual = residual_condensed.l2_norm();
-            accepted =
-              (alpha == alpha_max && set_changed) ||
-              trial_residual <= (1 - 1e-4 * alpha) * residual ||
-              trial_residual <= tol * reference ||
-              (slope < 0 && total_energy <= energy_start + 1e-4 * alpha * slope);
+            accepted       = (alpha == alpha_max && set_changed) ||
+                       trial_residual <= (1 - 1e-4 * alpha) * residual ||
+                       trial_residual <= tol * reference ||
+                       (slope < 0 &&
+                        total_energy <= energy_start + 1e-4 * alpha * slope);
             if (accepted)
               break;
           }
@@ -625,9 +629,9 @@ namespace RestShape
                         residual / reference,
                         (accepted ? trial_residual : residual) / reference,
                         alpha)
-              << (inverted_trials > 0 ?
-                    " (" + std::to_string(inverted_trials) + " shorter: a cell inverted)" :
-                    std::string())
+              << (inverted_trials > 0 ? " (" + std::to_string(inverted_trials) +
+                                          " shorter: a cell inverted)" :
+                                        std::string())
               << (parameters.solver.linear_solver == LinearSolverType::cg_amg ?
                     ", " + linear_solver->last_method + " " +
                       std::to_string(stats.linear_iterations) + " its" :
@@ -679,9 +683,9 @@ namespace RestShape
   SolveStatistics
   ForwardProblem::solve(const LoadState &target_load, const VectorType &rest)
   {
-    SolveStatistics stats;
-    const LoadState  start_load = current_load;
-    const VectorType w_start    = w;
+    SolveStatistics  stats;
+    const LoadState  start_load  = current_load;
+    const VectorType w_start     = w;
     VectorType       d_converged = d;
     double           s_done = 0, ds = 1. / parameters.solver.initial_load_steps;
     unsigned int     halvings = 0;
@@ -696,7 +700,8 @@ namespace RestShape
           start_load.acceleration +
           s * (target_load.acceleration - start_load.acceleration);
         current_load.pressure =
-          start_load.pressure + s * (target_load.pressure - start_load.pressure);
+          start_load.pressure +
+          s * (target_load.pressure - start_load.pressure);
         w = w_start;
         w.sadd(1 - s, s, rest);
         w_ghost = w;
@@ -777,7 +782,7 @@ namespace RestShape
   void
   ForwardProblem::set_state(const VectorType &new_d,
                             const VectorType &new_w,
-                            const LoadState & new_load)
+                            const LoadState  &new_load)
   {
     d            = new_d;
     w            = new_w;
@@ -802,10 +807,11 @@ namespace RestShape
   }
 
   VectorType
-  ForwardProblem::interpolate_vertex_field(const std::vector<Tensor<1, 3>> &values) const
+  ForwardProblem::interpolate_vertex_field(
+    const std::vector<Tensor<1, 3>> &values) const
   {
-    VectorType result = zero_vector();
-    const auto linear = scalar_element(labelled_mesh.is_simplex(), 1);
+    VectorType  result  = zero_vector();
+    const auto  linear  = scalar_element(labelled_mesh.is_simplex(), 1);
     const auto &support = fe_.base_element(0).get_unit_support_points();
     std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
     for (const auto &cell : dof_handler_.active_cell_iterators())
@@ -817,7 +823,7 @@ namespace RestShape
               if (!owned_dofs.is_element(dofs[i]))
                 continue;
               const auto [component, base] = fe_.system_to_component_index(i);
-              double     value             = 0;
+              double value                 = 0;
               for (unsigned int v = 0; v < cell->n_vertices(); ++v)
                 value += linear->shape_value(v, support[base]) *
                          values[cell->vertex_index(v)][component];
@@ -830,12 +836,12 @@ namespace RestShape
 
   bool
   ForwardProblem::rest_shape_is_valid(const VectorType &rest,
-                                      unsigned int &    n_bad) const
+                                      unsigned int     &n_bad) const
   {
     VectorType ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = rest;
-    FEValues<3>          fe_values(*mapping_, fe_, cell_quadrature, update_gradients);
-    std::vector<Tensor2> grad_w(cell_quadrature.size());
+    FEValues<3> fe_values(*mapping_, fe_, cell_quadrature, update_gradients);
+    std::vector<Tensor2>             grad_w(cell_quadrature.size());
     const FEValuesExtractors::Vector u(0);
     n_bad = 0;
     for (const auto &cell : dof_handler_.active_cell_iterators())
@@ -866,15 +872,15 @@ namespace RestShape
         sum += value.norm();
         max = std::max(max, value.norm());
       }
-    const double   n    = Utilities::MPI::sum(double(owned_nodes_.size()), comm);
+    const double n = Utilities::MPI::sum(double(owned_nodes_.size()), comm);
     return {Utilities::MPI::sum(sum, comm) / n, Utilities::MPI::max(max, comm)};
   }
 
   Vector<float>
   ForwardProblem::von_mises_stress() const
   {
-    Vector<float> result(labelled_mesh.triangulation().n_active_cells());
-    FEValues<3>   fe_values(*mapping_,
+    Vector<float>        result(labelled_mesh.triangulation().n_active_cells());
+    FEValues<3>          fe_values(*mapping_,
                           fe_,
                           cell_quadrature,
                           update_gradients | update_JxW_values);
@@ -925,11 +931,16 @@ namespace RestShape
     const double k = parameters.boundary.support_stiffness;
     if (k > 0)
       {
-        FEFaceValues<3> ffv(*mapping_, fe_, face_quadrature_, update_values | update_JxW_values);
+        FEFaceValues<3>                  ffv(*mapping_,
+                            fe_,
+                            face_quadrature_,
+                            update_values | update_JxW_values);
         const FEValuesExtractors::Vector u(0);
-        std::vector<Tensor<1, 3>> face_d(face_quadrature_.size()), face_w(face_quadrature_.size());
+        std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size()),
+          face_w(face_quadrature_.size());
         for (const auto &cell : dof_handler_.active_cell_iterators())
-          if (cell->is_locally_owned() && support_labels.count(cell->material_id()))
+          if (cell->is_locally_owned() &&
+              support_labels.count(cell->material_id()))
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary())
                 {
@@ -982,7 +993,8 @@ namespace RestShape
   ForwardProblem::evaluate(const bool with_tangent)
   {
     make_newton_constraints();
-    return assemble(with_tangent ? Assemble::residual_and_matrix : Assemble::residual);
+    return assemble(with_tangent ? Assemble::residual_and_matrix :
+                                   Assemble::residual);
   }
 
   const MatrixType &

@@ -9,7 +9,7 @@ namespace RestShape
   using namespace dealii;
 
   void
-  make_hemisphere(Triangulation<3> & tria,
+  make_hemisphere(Triangulation<3>  &tria,
                   const double       radius,
                   const unsigned int refinements,
                   const double       grading)
@@ -39,8 +39,9 @@ namespace RestShape
       r_max = std::max(r_max, p.norm());
     for (Point<3> &p : vertices)
       {
-        const bool   on_sphere = std::abs(p.distance(center) - radius) < 1e-9 * radius &&
-                               p[2] < radius * (1 - 1e-9);
+        const bool on_sphere =
+          std::abs(p.distance(center) - radius) < 1e-9 * radius &&
+          p[2] < radius * (1 - 1e-9);
         // The scale along the ray from the pole fades out towards the top,
         // which stays a plane.
         const double r = p.norm();

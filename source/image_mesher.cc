@@ -1,7 +1,3 @@
-#include <restshape/atomic_file.h>
-#include <restshape/image_mesher.h>
-#include <restshape/input_error.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Image_3.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
@@ -13,7 +9,9 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 #include <CGAL/make_mesh_3.h>
-
+#include <restshape/atomic_file.h>
+#include <restshape/image_mesher.h>
+#include <restshape/input_error.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,12 +23,12 @@ namespace RestShape
 {
   namespace
   {
-    using Kernel   = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Domain   = CGAL::Labeled_mesh_domain_3<Kernel>;
-    using Tr       = CGAL::Mesh_triangulation_3<Domain>::type;
-    using C3t3     = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
-    using Criteria = CGAL::Mesh_criteria_3<Tr>;
-    using Point    = Kernel::Point_3;
+    using Kernel     = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Domain     = CGAL::Labeled_mesh_domain_3<Kernel>;
+    using Tr         = CGAL::Mesh_triangulation_3<Domain>::type;
+    using C3t3       = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+    using Criteria   = CGAL::Mesh_criteria_3<Tr>;
+    using Point      = Kernel::Point_3;
     namespace params = CGAL::parameters;
 
     /// CGAL meshes in "scaled index space" (i h0, j h1, k h2); this maps such
@@ -51,7 +49,7 @@ namespace RestShape
       {
         return dealii::determinant(image.index_to_mm) < 0;
       }
-      const LabelledImage & image;
+      const LabelledImage  &image;
       std::array<double, 3> h;
     };
 
@@ -65,15 +63,15 @@ namespace RestShape
     /// Squared Euclidean distance transform along one line (Felzenszwalb and
     /// Huttenlocher 2012), samples @p h apart.
     void
-    distance_transform_1d(std::vector<double> &      f,
+    distance_transform_1d(std::vector<double>       &f,
                           const double               h,
                           std::vector<unsigned int> &v,
-                          std::vector<double> &      z,
-                          std::vector<double> &      d)
+                          std::vector<double>       &z,
+                          std::vector<double>       &d)
     {
-      const unsigned int n = f.size();
+      const unsigned int n  = f.size();
       const double       h2 = h * h;
-      auto intersection = [&](const unsigned int q, const unsigned int p) {
+      auto intersection     = [&](const unsigned int q, const unsigned int p) {
         return ((f[q] + h2 * q * q) - (f[p] + h2 * p * p)) /
                (2 * h2 * (double(q) - double(p)));
       };
@@ -107,36 +105,48 @@ namespace RestShape
   } // namespace
 
   MeshDescription
-  mesh_labelled_image(const LabelledImage &image, const ImageMeshOptions &options)
+  mesh_labelled_image(const LabelledImage    &image,
+                      const ImageMeshOptions &options)
   {
     const ToWorld to_world(image);
-    const auto &  h = to_world.h;
+    const auto   &h = to_world.h;
 
-    _image *raw = ::_createImage(image.size[0], image.size[1], image.size[2], 1,
-                                 h[0], h[1], h[2], 1, WK_FIXED, SGN_UNSIGNED);
+    _image *raw = ::_createImage(image.size[0],
+                                 image.size[1],
+                                 image.size[2],
+                                 1,
+                                 h[0],
+                                 h[1],
+                                 h[2],
+                                 1,
+                                 WK_FIXED,
+                                 SGN_UNSIGNED);
     std::memcpy(raw->data, image.labels.data(), image.labels.size());
     const CGAL::Image_3 cgal_image(raw);
 
     const Domain domain = Domain::create_labeled_image_mesh_domain(
       cgal_image, params::relative_error_bound = 1e-6);
-    const Criteria criteria(params::facet_angle = options.facet_angle,
-                            params::facet_size = options.facet_size,
+    const Criteria criteria(params::facet_angle    = options.facet_angle,
+                            params::facet_size     = options.facet_size,
                             params::facet_distance = options.facet_distance,
-                            params::cell_radius_edge_ratio = options.radius_edge,
+                            params::cell_radius_edge_ratio =
+                              options.radius_edge,
                             params::cell_size = options.cell_size);
     seed_cgal(options.seed);
     const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
       domain,
       criteria,
       params::perturb(params::sliver_bound = options.sliver_bound,
-                      params::time_limit = 0),
+                      params::time_limit   = 0),
       params::exude(params::sliver_bound = options.sliver_bound,
-                    params::time_limit = 0));
+                    params::time_limit   = 0));
 
-    MeshDescription                             mesh;
-    std::map<Tr::Vertex_handle, unsigned int>   index;
-    const bool                                  mirrors = to_world.mirrors();
-    for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    MeshDescription                           mesh;
+    std::map<Tr::Vertex_handle, unsigned int> index;
+    const bool                                mirrors = to_world.mirrors();
+    for (auto c = c3t3.cells_in_complex_begin();
+         c != c3t3.cells_in_complex_end();
+         ++c)
       {
         dealii::CellData<3> cell(4);
         for (unsigned int v = 0; v < 4; ++v)
@@ -173,8 +183,9 @@ namespace RestShape
           p[v] = tets.vertices[cell.vertices[v]];
         const Tensor<1, 3> a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
         const double       six_volume = a * dealii::cross_product_3d(b, c);
-        q.min_volume = (q.total_volume == 0 ? six_volume / 6 :
-                                              std::min(q.min_volume, six_volume / 6));
+        q.min_volume =
+          (q.total_volume == 0 ? six_volume / 6 :
+                                 std::min(q.min_volume, six_volume / 6));
         q.total_volume += six_volume / 6;
         q.volume_per_label[cell.material_id] += six_volume / 6;
 
@@ -198,8 +209,10 @@ namespace RestShape
         std::array<Tensor<1, 3>, 4> n;
         for (unsigned int m = 0; m < 4; ++m)
           {
-            const unsigned int i = (m + 1) % 4, j = (m + 2) % 4, k = (m + 3) % 4;
-            Tensor<1, 3> normal = dealii::cross_product_3d(p[j] - p[i], p[k] - p[i]);
+            const unsigned int i = (m + 1) % 4, j = (m + 2) % 4,
+                               k = (m + 3) % 4;
+            Tensor<1, 3> normal =
+              dealii::cross_product_3d(p[j] - p[i], p[k] - p[i]);
             if (normal * (p[i] - p[m]) < 0)
               normal = -normal;
             n[m] = normal / normal.norm();
@@ -228,10 +241,10 @@ namespace RestShape
                           const double         closing,
                           const double         facet_size,
                           const double         facet_distance,
-                          const std::string &  file)
+                          const std::string   &file)
   {
     const ToWorld to_world(image);
-    const auto &  h     = to_world.h;
+    const auto   &h     = to_world.h;
     const double  h_min = *std::min_element(h.begin(), h.end());
 
     // The distance grid: the image padded so that the level set fits.
@@ -239,9 +252,10 @@ namespace RestShape
     std::array<unsigned int, 3> n;
     for (unsigned int d = 0; d < 3; ++d)
       n[d] = image.size[d] + 2 * pad;
-    const auto at = [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-      return i + std::size_t(n[0]) * (j + std::size_t(n[1]) * k);
-    };
+    const auto at =
+      [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+        return i + std::size_t(n[0]) * (j + std::size_t(n[1]) * k);
+      };
     std::vector<bool> region(std::size_t(n[0]) * n[1] * n[2], false);
     for (unsigned int k = 0; k < image.size[2]; ++k)
       for (unsigned int j = 0; j < image.size[1]; ++j)
@@ -301,9 +315,9 @@ namespace RestShape
     // index space of the unpadded image.
     const double shift    = 0.5 * h_min + gap;
     const auto   function = [&](const Point &p) -> double {
-      std::array<double, 3> x{{CGAL::to_double(p.x()) / h[0] + pad,
-                               CGAL::to_double(p.y()) / h[1] + pad,
-                               CGAL::to_double(p.z()) / h[2] + pad}};
+      std::array<double, 3>       x{{CGAL::to_double(p.x()) / h[0] + pad,
+                                     CGAL::to_double(p.y()) / h[1] + pad,
+                                     CGAL::to_double(p.z()) / h[2] + pad}};
       std::array<unsigned int, 3> i0;
       std::array<double, 3>       t;
       for (unsigned int dd = 0; dd < 3; ++dd)
@@ -329,8 +343,8 @@ namespace RestShape
       return value - shift;
     };
 
-    Kernel::Point_3 lower(-pad * h[0], -pad * h[1], -pad * h[2]);
-    Kernel::Point_3 upper((n[0] - pad - 1) * h[0],
+    Kernel::Point_3       lower(-pad * h[0], -pad * h[1], -pad * h[2]);
+    Kernel::Point_3       upper((n[0] - pad - 1) * h[0],
                           (n[1] - pad - 1) * h[1],
                           (n[2] - pad - 1) * h[2]);
     const Kernel::Point_3 centre = CGAL::midpoint(lower, upper);
@@ -338,11 +352,11 @@ namespace RestShape
       function,
       Kernel::Sphere_3(centre, CGAL::squared_distance(lower, centre)),
       params::relative_error_bound = 1e-6);
-    const Criteria criteria(params::facet_angle = 25,
-                            params::facet_size = facet_size,
-                            params::facet_distance = facet_distance,
+    const Criteria criteria(params::facet_angle            = 25,
+                            params::facet_size             = facet_size,
+                            params::facet_distance         = facet_distance,
                             params::cell_radius_edge_ratio = 3,
-                            params::cell_size = 4 * facet_size);
+                            params::cell_size              = 4 * facet_size);
     seed_cgal(0);
     const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain,
                                               criteria,
@@ -354,8 +368,8 @@ namespace RestShape
     CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, surface);
     for (const auto vertex : surface.vertices())
       {
-        const Point &    p = surface.point(vertex);
-        const auto       x = to_world(p.x(), p.y(), p.z());
+        const Point &p        = surface.point(vertex);
+        const auto   x        = to_world(p.x(), p.y(), p.z());
         surface.point(vertex) = Point(x[0], x[1], x[2]);
       }
     if (!CGAL::Polygon_mesh_processing::is_outward_oriented(surface))
@@ -364,7 +378,9 @@ namespace RestShape
     write_named_file_atomically(
       file,
       [&](const std::string &tmp) {
-        return CGAL::IO::write_polygon_mesh(tmp, surface, params::stream_precision(12));
+        return CGAL::IO::write_polygon_mesh(tmp,
+                                            surface,
+                                            params::stream_precision(12));
       },
       "--skull-out",
       "cannot write the surface; expected a writable .stl, .off or .obj file name");

@@ -42,7 +42,8 @@ namespace RestShape
   one_line_message(const std::exception &exc)
   {
     std::string text;
-    if (const auto *dealii_exc = dynamic_cast<const dealii::ExceptionBase *>(&exc))
+    if (const auto *dealii_exc =
+          dynamic_cast<const dealii::ExceptionBase *>(&exc))
       {
         std::ostringstream info;
         dealii_exc->print_info(info);

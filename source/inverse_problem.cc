@@ -18,12 +18,12 @@ namespace RestShape
   } // namespace
 
   InverseProblem::InverseProblem(const InverseParameters &parameters,
-                                 ForwardProblem &         forward,
-                                 ContactProblem *         contact,
-                                 OutputWriter *           output,
-                                 TimerOutput &            timer,
-                                 ConditionalOStream &     pcout,
-                                 const Timer &            wall_timer)
+                                 ForwardProblem          &forward,
+                                 ContactProblem          *contact,
+                                 OutputWriter            *output,
+                                 TimerOutput             &timer,
+                                 ConditionalOStream      &pcout,
+                                 const Timer             &wall_timer)
     : parameters(parameters)
     , forward(forward)
     , contact(contact)
@@ -36,7 +36,9 @@ namespace RestShape
   double
   InverseProblem::measure(const std::pair<double, double> &errors) const
   {
-    return parameters.measure == InverseParameters::Measure::mean ? errors.first : errors.second;
+    return parameters.measure == InverseParameters::Measure::mean ?
+             errors.first :
+             errors.second;
   }
 
   const std::vector<InverseIterationRecord> &
@@ -58,17 +60,20 @@ namespace RestShape
                        contact != nullptr ? contact->n_active() : 0,
                        wall_timer.wall_time(),
                        anderson});
-    pcout << "Inverse iteration " << iteration << ": mean error " << mm(errors.first)
-          << ", max " << mm(errors.second) << " (" << stats.newton_iterations
-          << " Newton iterations" << (anderson ? ", Anderson step" : "")
-          << (contact != nullptr ? ", " + std::to_string(history.back().active_contact_nodes) +
-                                     " contact nodes" :
-                                   std::string())
+    pcout << "Inverse iteration " << iteration << ": mean error "
+          << mm(errors.first) << ", max " << mm(errors.second) << " ("
+          << stats.newton_iterations << " Newton iterations"
+          << (anderson ? ", Anderson step" : "")
+          << (contact != nullptr ?
+                ", " + std::to_string(history.back().active_contact_nodes) +
+                  " contact nodes" :
+                std::string())
           << ")" << std::endl;
   }
 
   void
-  InverseProblem::write_output(const unsigned int step, const unsigned int iteration)
+  InverseProblem::write_output(const unsigned int step,
+                               const unsigned int iteration)
   {
     if (output == nullptr)
       return;
@@ -84,33 +89,36 @@ namespace RestShape
     rest += forward.owned_copy(forward.rest_displacement());
     equilibrium += forward.owned_copy(forward.displacement());
 
-    const std::string unit  = output->length_unit_name;
-    const double      scale = output->length_scale();
-    std::vector<NodalField> fields = {{&error, {"error_" + unit}, scale, "error_magnitude_" + unit},
-                                      {&target, {"target_position_" + unit}, scale, ""},
-                                      {&rest, {"rest_position_" + unit}, scale, ""},
-                                      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""}};
+    const std::string       unit   = output->length_unit_name;
+    const double            scale  = output->length_scale();
+    std::vector<NodalField> fields = {
+      {&error, {"error_" + unit}, scale, "error_magnitude_" + unit},
+      {&target, {"target_position_" + unit}, scale, ""},
+      {&rest, {"rest_position_" + unit}, scale, ""},
+      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""}};
     VectorType contact_fields;
     if (contact != nullptr)
       {
         contact_fields = contact->nodal_fields(forward.raw_residual(), scale);
-        fields.push_back({&contact_fields,
-                          {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
-                          1.,
-                          ""});
+        fields.push_back(
+          {&contact_fields,
+           {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
+           1.,
+           ""});
       }
     output->write_fields(forward, step, iteration, fields);
   }
 
   InverseResult
-  InverseProblem::run(const VectorType &initial_rest, const unsigned int first_step)
+  InverseProblem::run(const VectorType  &initial_rest,
+                      const unsigned int first_step)
   {
     InverseResult result;
     history.clear();
-    const LoadState load = forward.scene_load();
+    const LoadState load   = forward.scene_load();
     const auto      finish = [&](const std::string &reason) {
-      result.reason    = reason;
-      const auto e     = forward.nodal_norms(forward.displacement());
+      result.reason     = reason;
+      const auto e      = forward.nodal_norms(forward.displacement());
       result.mean_error = e.first;
       result.max_error  = e.second;
       if (!reason.empty())
@@ -120,13 +128,16 @@ namespace RestShape
 
     // Iteration 0: the forward problem from the initial rest shape (the
     // target itself unless a rest shape was given), loaded from zero.
-    forward.set_state(forward.zero_vector(), forward.zero_vector(), LoadState());
+    forward.set_state(forward.zero_vector(),
+                      forward.zero_vector(),
+                      LoadState());
     SolveStatistics stats = forward.solve(load, initial_rest);
     ++result.forward_solves;
     result.newton_iterations += stats.newton_iterations;
     if (!stats.converged)
-      return finish("the forward solve from the initial rest shape did not converge: " +
-                    stats.failure);
+      return finish(
+        "the forward solve from the initial rest shape did not converge: " +
+        stats.failure);
     record(0, stats, false);
     write_output(first_step, 0);
 
@@ -139,12 +150,13 @@ namespace RestShape
         return finish("");
       }
 
-    const bool          accelerate = parameters.acceleration == InverseParameters::Acceleration::anderson;
+    const bool accelerate =
+      parameters.acceleration == InverseParameters::Acceleration::anderson;
     AndersonAccelerator anderson(parameters.anderson_depth);
     VectorType          w = initial_rest, d = forward.zero_vector();
-    d                     = forward.displacement();
-    bool   force_plain    = false;
-    double step           = 1; // < 1 after a plain step's forward solve failed
+    d                  = forward.displacement();
+    bool   force_plain = false;
+    double step        = 1; // < 1 after a plain step's forward solve failed
 
     while (result.iterations < parameters.max_iterations)
       {
@@ -170,31 +182,36 @@ namespace RestShape
           {
             if (accelerated)
               {
-                pcout << "  Anderson step would invert " << n_bad << " cells: plain update"
-                      << std::endl;
+                pcout << "  Anderson step would invert " << n_bad
+                      << " cells: plain update" << std::endl;
                 anderson.reset();
                 anderson.next(w, f);
                 candidate   = plain;
                 accelerated = false;
               }
-            for (double beta = 0.5 * step; !forward.rest_shape_is_valid(candidate, n_bad); beta /= 2)
+            for (double beta = 0.5 * step;
+                 !forward.rest_shape_is_valid(candidate, n_bad);
+                 beta /= 2)
               {
                 if (beta < 1. / 64)
-                  return finish("every rest-shape update, even shortened 64 times, would "
-                                "invert " + std::to_string(n_bad) + " cells (iteration " +
-                                std::to_string(result.iterations + 1) + ", error " +
-                                mm(previous) + ")");
+                  return finish(
+                    "every rest-shape update, even shortened 64 times, would "
+                    "invert " +
+                    std::to_string(n_bad) + " cells (iteration " +
+                    std::to_string(result.iterations + 1) + ", error " +
+                    mm(previous) + ")");
                 candidate = w;
                 candidate.add(beta, f);
-                pcout << "  The update would invert " << n_bad << " cells: shortened to "
-                      << beta << std::endl;
+                pcout << "  The update would invert " << n_bad
+                      << " cells: shortened to " << beta << std::endl;
               }
           }
 
         // Forward solve from the last equilibrium, the rest shape moving
         // from w to the candidate.
-        const auto contact_state = contact != nullptr ? contact->state() : ContactProblem::State();
-        stats                    = forward.solve(load, candidate);
+        const auto contact_state =
+          contact != nullptr ? contact->state() : ContactProblem::State();
+        stats = forward.solve(load, candidate);
         ++result.forward_solves;
         result.newton_iterations += stats.newton_iterations;
         const auto   errors = forward.nodal_norms(forward.displacement());
@@ -212,18 +229,21 @@ namespace RestShape
                   {
                     step /= 2;
                     pcout << "  The forward solve failed (" << stats.failure
-                          << "): the update is shortened to " << step << std::endl;
+                          << "): the update is shortened to " << step
+                          << std::endl;
                     ++result.rejected_steps;
                     continue;
                   }
-                return finish("the forward solve of iteration " +
-                              std::to_string(result.iterations + 1) +
-                              " did not converge, even with the update shortened to " +
-                              std::to_string(step) + ": " + stats.failure);
+                return finish(
+                  "the forward solve of iteration " +
+                  std::to_string(result.iterations + 1) +
+                  " did not converge, even with the update shortened to " +
+                  std::to_string(step) + ": " + stats.failure);
               }
             pcout << "  Anderson step rejected ("
-                  << (stats.converged ? "error " + mm(error) + " > " + mm(previous) :
-                                        "forward solve failed: " + stats.failure)
+                  << (stats.converged ?
+                        "error " + mm(error) + " > " + mm(previous) :
+                        "forward solve failed: " + stats.failure)
                   << "): plain update" << std::endl;
             ++result.rejected_steps;
             force_plain = true;
@@ -244,23 +264,27 @@ namespace RestShape
           }
         increases = (error > previous) ? increases + 1 : 0;
         if (error > 2 * initial)
-          return finish("diverged: the error grew from " + mm(initial) + " to " + mm(error) +
-                        " in " + std::to_string(result.iterations) + " iterations");
+          return finish("diverged: the error grew from " + mm(initial) +
+                        " to " + mm(error) + " in " +
+                        std::to_string(result.iterations) + " iterations");
         if (increases >= 3)
-          return finish("diverged: the error grew in 3 iterations in a row, from its best " +
-                        mm(std::min(best, error)) + " to " + mm(error) + " at iteration " +
-                        std::to_string(result.iterations));
+          return finish(
+            "diverged: the error grew in 3 iterations in a row, from its best " +
+            mm(std::min(best, error)) + " to " + mm(error) + " at iteration " +
+            std::to_string(result.iterations));
         if (error < 0.99 * best)
           {
             best       = error;
             since_best = 0;
           }
         else if (++since_best >= 10)
-          return finish("stagnated: the error has not improved by 1 % in 10 iterations (best " +
-                        mm(best) + ", tolerance " + mm(parameters.tolerance) + ")");
+          return finish(
+            "stagnated: the error has not improved by 1 % in 10 iterations (best " +
+            mm(best) + ", tolerance " + mm(parameters.tolerance) + ")");
         previous = error;
       }
-    return finish("not converged after " + std::to_string(parameters.max_iterations) +
+    return finish("not converged after " +
+                  std::to_string(parameters.max_iterations) +
                   " iterations (error " + mm(previous) + ", tolerance " +
                   mm(parameters.tolerance) + ")");
   }

@@ -24,8 +24,8 @@ namespace RestShape
     Label
     parse_label(const std::string &text, const std::string &parameter)
     {
-      const std::string t = dealii::Utilities::trim(text);
-      std::size_t       pos = 0;
+      const std::string t     = dealii::Utilities::trim(text);
+      std::size_t       pos   = 0;
       long              value = -1;
       try
         {
@@ -71,8 +71,7 @@ namespace RestShape
           }
         else
           {
-            const Label label =
-              parse_label(item.substr(0, colon), parameter);
+            const Label label = parse_label(item.substr(0, colon), parameter);
             if (result.per_label.count(label))
               throw InputError("",
                                parameter,
@@ -112,8 +111,7 @@ namespace RestShape
     std::vector<std::pair<Label, double>> values(per_label.begin(),
                                                  per_label.end());
     if (value_for_all)
-      values.emplace_back(dealii::numbers::invalid_material_id,
-                          *value_for_all);
+      values.emplace_back(dealii::numbers::invalid_material_id, *value_for_all);
     return values;
   }
 
@@ -144,8 +142,7 @@ namespace RestShape
                 if (c < 'x' || c > 'z')
                   throw InputError("",
                                    parameter,
-                                   "'" + item +
-                                     "': unknown component '" +
+                                   "'" + item + "': unknown component '" +
                                      std::string(1, c) +
                                      "'; expected a subset of xyz");
                 fixed.components[c - 'x'] = true;

@@ -1,8 +1,7 @@
+#include <nifti2_io.h>
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/labelled_image.h>
-
-#include <nifti2_io.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -84,11 +83,10 @@ namespace RestShape
     if (!nim || nim->data == nullptr)
       throw fail("not a readable NIfTI image; expected a labelled NIfTI "
                  "image (.nii or .nii.gz)");
-    if (nim->nx < 2 || nim->ny < 2 || nim->nz < 2 || nim->nt > 1 ||
-        nim->nu > 1)
+    if (nim->nx < 2 || nim->ny < 2 || nim->nz < 2 || nim->nt > 1 || nim->nu > 1)
       throw fail("the image has dimensions " + std::to_string(nim->nx) + "x" +
-                 std::to_string(nim->ny) + "x" + std::to_string(nim->nz) +
-                 "x" + std::to_string(nim->nt) +
+                 std::to_string(nim->ny) + "x" + std::to_string(nim->nz) + "x" +
+                 std::to_string(nim->nt) +
                  "; expected a 3d volume of at least 2x2x2 voxels");
 
     const std::size_t   n = nim->nvox;
@@ -124,8 +122,8 @@ namespace RestShape
                      nifti_datatype_string(nim->datatype) +
                      "; expected integer labels (uint8, int16, ...)");
       }
-    const bool scaled = nim->scl_slope != 0 &&
-                        (nim->scl_slope != 1 || nim->scl_inter != 0);
+    const bool scaled =
+      nim->scl_slope != 0 && (nim->scl_slope != 1 || nim->scl_inter != 0);
 
     LabelledImage image;
     image.size = {{static_cast<unsigned int>(nim->nx),
@@ -174,11 +172,11 @@ namespace RestShape
 
   void
   write_labelled_image(const LabelledImage &image,
-                       const std::string &  file,
-                       const std::string &  parameter)
+                       const std::string   &file,
+                       const std::string   &parameter)
   {
-    const int64_t dims[8] = {3, image.size[0], image.size[1], image.size[2],
-                             1, 1,             1,             1};
+    const int64_t dims[8] = {
+      3, image.size[0], image.size[1], image.size[2], 1, 1, 1, 1};
     nifti_set_debug_level(0);
     std::unique_ptr<nifti_image, NiftiDeleter> nim(
       nifti_make_new_nim(dims, DT_UINT8, 1));
@@ -198,11 +196,14 @@ namespace RestShape
         nim->sto_xyz.m[r][c] =
           r == 3 ? (c == 3 ? 1. : 0.) :
                    (c == 3 ? image.offset[r] : image.index_to_mm[r][c]);
-    nim->sto_ijk = nifti_dmat44_inverse(nim->sto_xyz);
+    nim->sto_ijk           = nifti_dmat44_inverse(nim->sto_xyz);
     const std::string name = file;
     if (!(name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0) &&
         !(name.size() > 7 && name.compare(name.size() - 7, 7, ".nii.gz") == 0))
-      throw InputError(file, parameter, "unsupported file name; expected a name ending in .nii or .nii.gz");
+      throw InputError(
+        file,
+        parameter,
+        "unsupported file name; expected a name ending in .nii or .nii.gz");
     write_named_file_atomically(
       file,
       [&](const std::string &tmp) {

@@ -4,15 +4,14 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <restshape/input_error.h>
-#include <restshape/linear_solver.h>
-
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <restshape/input_error.h>
+#include <restshape/linear_solver.h>
 
 namespace RestShape
 {
@@ -49,9 +48,12 @@ namespace RestShape
   }
 
   void
-  LinearSolver::solve_directly(const MatrixType &A, VectorType &x, const VectorType &b)
+  LinearSolver::solve_directly(const MatrixType &A,
+                               VectorType       &x,
+                               const VectorType &b)
   {
-    Epetra_CrsMatrix &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+    Epetra_CrsMatrix &matrix =
+      const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
     if (factored_matrix != &matrix)
       {
         // New matrix object (new mesh): new symbolic factorisation.
@@ -60,13 +62,14 @@ namespace RestShape
         direct_problem->SetOperator(&matrix);
         Amesos factory;
         direct_solver.reset(factory.Create("Amesos_Mumps", *direct_problem));
-        AssertThrow(direct_solver != nullptr, ExcMessage("MUMPS is not available in Amesos"));
+        AssertThrow(direct_solver != nullptr,
+                    ExcMessage("MUMPS is not available in Amesos"));
         Teuchos::ParameterList list;
         // The tangent is symmetric (possibly indefinite): LDL^T.
         list.set("MatrixProperty", "symmetric");
         direct_solver->SetParameters(list);
         auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get());
-        mumps->SetICNTL(7, 5);  // METIS ordering
+        mumps->SetICNTL(7, 5);   // METIS ordering
         mumps->SetICNTL(14, 50); // 50 % workspace margin
         if (direct_solver->SymbolicFactorization() != 0)
           throw SolverFailure("MUMPS: symbolic factorisation failed");
@@ -78,8 +81,9 @@ namespace RestShape
     const int status = direct_solver->NumericFactorization();
     if (status != 0)
       throw SolverFailure("the direct solver (MUMPS) could not factorise the "
-                          "matrix with " + std::to_string(A.m()) +
-                          " unknowns (error " + std::to_string(status) +
+                          "matrix with " +
+                          std::to_string(A.m()) + " unknowns (error " +
+                          std::to_string(status) +
                           "): singular matrix? check that the scene fixes "
                           "every rigid-body motion");
     direct_solver->Solve();
@@ -87,7 +91,7 @@ namespace RestShape
 
   unsigned int
   LinearSolver::solve_iteratively(const MatrixType &A,
-                                  VectorType &      x,
+                                  VectorType       &x,
                                   const VectorType &b)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -100,7 +104,7 @@ namespace RestShape
     std::unique_ptr<Epetra_MultiVector> unused;
     data.set_parameters(list, unused, A.trilinos_matrix());
 
-    const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+    const Epetra_Map  &map = A.trilinos_matrix().DomainMap();
     Epetra_MultiVector modes(map, rigid_body_modes.size());
     for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
       for (int i = 0; i < map.NumMyElements(); ++i)
@@ -114,8 +118,8 @@ namespace RestShape
     TrilinosWrappers::PreconditionAMG amg;
     amg.initialize(A.trilinos_matrix(), list);
 
-    const double   target = parameters.linear_tolerance * b.l2_norm();
-    SolverControl  control(2000, target);
+    const double  target = parameters.linear_tolerance * b.l2_norm();
+    SolverControl control(2000, target);
     try
       {
         SolverCG<VectorType> cg(control);

@@ -39,9 +39,7 @@ namespace
     const std::string value = Utilities::trim(assignment.substr(equal + 1));
     const auto        parts = Utilities::split_string_list(path, '/');
     if (parts.size() < 2)
-      throw InputError("--set",
-                       path,
-                       "expected 'Subsection/Parameter=value'");
+      throw InputError("--set", path, "expected 'Subsection/Parameter=value'");
     for (unsigned int i = 0; i + 1 < parts.size(); ++i)
       prm.enter_subsection(parts[i]);
     try
@@ -62,10 +60,12 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-  std::string    prm_file;
+  Utilities::MPI::MPI_InitFinalize mpi(argc,
+                                       argv,
+                                       numbers::invalid_unsigned_int);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
+  std::string prm_file;
 
   try
     {
@@ -91,7 +91,9 @@ main(int argc, char **argv)
           else if (arg == "--set")
             {
               if (i + 1 >= argc)
-                throw InputError("--set", "", "missing 'Subsection/Parameter=value'");
+                throw InputError("--set",
+                                 "",
+                                 "missing 'Subsection/Parameter=value'");
               overrides.emplace_back(argv[++i]);
             }
           else if (arg.rfind("--set=", 0) == 0)
@@ -104,7 +106,10 @@ main(int argc, char **argv)
             throw InputError(arg, "", "more than one scene file given");
         }
       if (prm_file.empty())
-        throw InputError("", "", "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
+        throw InputError(
+          "",
+          "",
+          "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
       std::error_code ec;
       if (!std::filesystem::is_regular_file(prm_file, ec))
         throw InputError(prm_file, "", "no such scene file");
@@ -149,7 +154,8 @@ main(int argc, char **argv)
   catch (const SolverFailure &exc)
     {
       if (root)
-        std::cerr << "restshape: error: " << prm_file << ": " << exc.what() << std::endl;
+        std::cerr << "restshape: error: " << prm_file << ": " << exc.what()
+                  << std::endl;
       return 2;
     }
   catch (const std::exception &exc)

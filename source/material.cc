@@ -31,9 +31,9 @@ namespace RestShape
     for (unsigned int it = 0; it < 100; ++it)
       {
         const Tensor2 X_inv_T = transpose(invert(X));
-        const double  g = std::sqrt(std::sqrt(X_inv_T.norm_square() /
-                                             X.norm_square()));
-        const Tensor2 X_new = 0.5 * (g * X + X_inv_T / g);
+        const double  g =
+          std::sqrt(std::sqrt(X_inv_T.norm_square() / X.norm_square()));
+        const Tensor2 X_new  = 0.5 * (g * X + X_inv_T / g);
         const double  change = (X_new - X).norm();
         X                    = X_new;
         if (change < 1e-14)
@@ -49,7 +49,7 @@ namespace RestShape
   CorotationalLaw::project_twist_modes(const Tensor2 &R,
                                        const Tensor2 &S,
                                        const double   tr_E,
-                                       Tensor4 &      A) const
+                                       Tensor4       &A) const
   {
     // With S = sum_k s_k q_k q_k^T, the rotational variations
     // dF = R skew(q_k) / sqrt(2) are eigenvectors of dP/dF (the "twist"
@@ -59,15 +59,15 @@ namespace RestShape
     // distinct. They turn negative under compression, the only way the
     // co-rotational tangent loses definiteness (the other six eigenvalues
     // are 2 mu and those of 2 mu I + lambda 1 1^T). Remove the negative ones.
-    const auto eig =
-      eigenvectors(symmetrize(S));
+    const auto eig = eigenvectors(symmetrize(S));
     for (unsigned int k = 0; k < 3; ++k)
       {
         const double s_ij  = eig[(k + 1) % 3].first + eig[(k + 2) % 3].first;
         const double value = (2 * mu * (s_ij - 2) + 2 * lambda * tr_E) / s_ij;
         if (value >= 0)
           continue;
-        const Tensor2 D = (1. / std::sqrt(2.)) * (R * skew_matrix(eig[k].second));
+        const Tensor2 D =
+          (1. / std::sqrt(2.)) * (R * skew_matrix(eig[k].second));
         A -= value * outer_product(D, D);
       }
   }
@@ -78,11 +78,11 @@ namespace RestShape
   {}
 
   bool
-  CorotationalLaw::evaluate(const Tensor2 &   F,
-                            Tensor2 &         P,
-                            Tensor4 *         tangent,
+  CorotationalLaw::evaluate(const Tensor2    &F,
+                            Tensor2          &P,
+                            Tensor4          *tangent,
                             const TangentType type,
-                            double *          energy) const
+                            double           *energy) const
   {
     Tensor2 R, S;
     if (!polar_decomposition(F, R, S))
@@ -95,9 +95,9 @@ namespace RestShape
       return true;
 
     // (tr S I - S)^-1 maps the axial vector of W S + S W to that of W.
-    const Tensor2 M     = invert(trace(S) * unit_symmetric_tensor<3>() - S);
-    const Tensor2 R_T   = transpose(R);
-    Tensor4 &     A     = *tangent;
+    const Tensor2 M   = invert(trace(S) * unit_symmetric_tensor<3>() - S);
+    const Tensor2 R_T = transpose(R);
+    Tensor4      &A   = *tangent;
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int L = 0; L < 3; ++L)
         {
@@ -109,18 +109,18 @@ namespace RestShape
           if (type == TangentType::warped)
             {
               const Tensor2 sym_Z = 0.5 * (Z + transpose(Z));
-              dP = R * (2 * mu * sym_Z + lambda * trace(Z) * Tensor2(unit_symmetric_tensor<3>()));
+              dP                  = R * (2 * mu * sym_Z + lambda * trace(Z) *
+                                           Tensor2(unit_symmetric_tensor<3>()));
             }
           else
             {
               const Tensor2 skew = Z - transpose(Z);
               Tensor<1, 3>  a;
-              a[0]                 = skew[2][1];
-              a[1]                 = skew[0][2];
-              a[2]                 = skew[1][0];
+              a[0]             = skew[2][1];
+              a[1]             = skew[0][2];
+              a[2]             = skew[1][0];
               const Tensor2 dR = R * skew_matrix(M * a);
-              dP               = (lambda * tr_E - 2 * mu) * dR +
-                   lambda * trace(Z) * R;
+              dP = (lambda * tr_E - 2 * mu) * dR + lambda * trace(Z) * R;
               dP[k][L] += 2 * mu;
             }
           for (unsigned int i = 0; i < 3; ++i)
@@ -155,14 +155,14 @@ namespace RestShape
   }
 
   MaterialTable::MaterialTable(const MaterialParameters &prm,
-                               const std::set<Label> &   labels)
+                               const std::set<Label>    &labels)
   {
     for (const Label label : labels)
       {
         Entry e;
-        e.E   = prm.youngs_modulus(label);
-        e.rho = prm.density(label);
-        e.law = CorotationalLaw(e.E, prm.poissons_ratio(label));
+        e.E            = prm.youngs_modulus(label);
+        e.rho          = prm.density(label);
+        e.law          = CorotationalLaw(e.E, prm.poissons_ratio(label));
         entries[label] = e;
       }
   }

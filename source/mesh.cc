@@ -1,15 +1,14 @@
 #include <deal.II/base/utilities.h>
-#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <gmsh.h>
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
-
-#include <gmsh.h>
 #include <unistd.h>
 
 #include <array>
@@ -41,18 +40,19 @@ namespace RestShape
      */
     std::vector<double>
     corner_determinants(const std::vector<Point<3>> &v,
-                        const CellData<3> &          cell,
-                        double &                     longest_edge)
+                        const CellData<3>           &cell,
+                        double                      &longest_edge)
     {
-      const auto &i = cell.vertices;
+      const auto         &i = cell.vertices;
       std::vector<double> dets;
       longest_edge = 0;
       for (unsigned int a = 0; a < i.size(); ++a)
         for (unsigned int b = a + 1; b < i.size(); ++b)
           longest_edge = std::max(longest_edge, v[i[a]].distance(v[i[b]]));
       if (i.size() == 4)
-        dets.push_back(
-          triple_product(v[i[1]] - v[i[0]], v[i[2]] - v[i[0]], v[i[3]] - v[i[0]]));
+        dets.push_back(triple_product(v[i[1]] - v[i[0]],
+                                      v[i[2]] - v[i[0]],
+                                      v[i[3]] - v[i[0]]));
       else
         for (unsigned int corner = 0; corner < 8; ++corner)
           {
@@ -63,7 +63,7 @@ namespace RestShape
               {
                 const unsigned int bit   = 1u << d;
                 const unsigned int lower = corner & ~bit;
-                e[d] = v[i[lower | bit]] - v[i[lower]];
+                e[d]                     = v[i[lower | bit]] - v[i[lower]];
               }
             dets.push_back(triple_product(e[0], e[1], e[2]));
           }
@@ -71,7 +71,7 @@ namespace RestShape
     }
 
     Point<3>
-    centroid(const std::vector<Point<3>> &v,
+    centroid(const std::vector<Point<3>>     &v,
              const std::vector<unsigned int> &indices)
     {
       Point<3> c;
@@ -115,10 +115,11 @@ namespace RestShape
           {
             for (unsigned int d = 0; d < 3; ++d)
               if (!std::isfinite(coordinates[3 * n + d]))
-                throw InputError(file,
-                                 file_parameter,
-                                 "node " + std::to_string(node_tags[n]) +
-                                   " has a coordinate that is not a finite number");
+                throw InputError(
+                  file,
+                  file_parameter,
+                  "node " + std::to_string(node_tags[n]) +
+                    " has a coordinate that is not a finite number");
             index[node_tags[n]] = n;
             result.vertices.emplace_back(coordinates[3 * n] * length_unit,
                                          coordinates[3 * n + 1] * length_unit,
@@ -134,13 +135,15 @@ namespace RestShape
             gmsh::model::getPhysicalGroupsForEntity(dim, entity, physical);
             const int label = physical.empty() ? entity : physical[0];
             if (label < 0 || label > 65535)
-              throw InputError(file, file_parameter,
+              throw InputError(file,
+                               file_parameter,
                                "volume tag " + std::to_string(label) +
                                  " is not a valid label; expected 0..65535");
 
             std::vector<int>                      types;
             std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-            gmsh::model::mesh::getElements(types, element_tags, element_nodes, dim, entity);
+            gmsh::model::mesh::getElements(
+              types, element_tags, element_nodes, dim, entity);
             for (unsigned int t = 0; t < types.size(); ++t)
               {
                 if (types[t] != 4 && types[t] != 5)
@@ -152,18 +155,22 @@ namespace RestShape
                                      "hexahedra (5)");
                 const unsigned int n = (types[t] == 4 ? 4 : 8);
                 // gmsh numbers hexahedron vertices counter-clockwise per face.
-                static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+                static const unsigned int hex_order[8] = {
+                  0, 1, 3, 2, 4, 5, 7, 6};
                 for (unsigned int e = 0; e < element_tags[t].size(); ++e)
                   {
                     CellData<3> cell(n);
                     for (unsigned int v = 0; v < n; ++v)
                       {
-                        const auto it =
-                          index.find(element_nodes[t][n * e + (n == 4 ? v : hex_order[v])]);
+                        const auto it = index.find(
+                          element_nodes[t]
+                                       [n * e + (n == 4 ? v : hex_order[v])]);
                         if (it == index.end())
-                          throw InputError(file, file_parameter,
-                                           "element " + std::to_string(element_tags[t][e]) +
-                                             " refers to a node that does not exist");
+                          throw InputError(
+                            file,
+                            file_parameter,
+                            "element " + std::to_string(element_tags[t][e]) +
+                              " refers to a node that does not exist");
                         cell.vertices[v] = it->second;
                       }
                     cell.material_id = label;
@@ -185,7 +192,8 @@ namespace RestShape
         throw InputError(file,
                          file_parameter,
                          "not a valid gmsh mesh (" +
-                           (message.empty() ? std::string("unreadable") : message) +
+                           (message.empty() ? std::string("unreadable") :
+                                              message) +
                            "); expected a gmsh .msh file with 3d cells");
       }
     gmsh::finalize();
@@ -201,7 +209,7 @@ namespace RestShape
                          "only one cell type");
 
     // Drop vertices that no cell uses (e.g. of boundary-only entities).
-    std::vector<int> new_index(result.vertices.size(), -1);
+    std::vector<int>      new_index(result.vertices.size(), -1);
     std::vector<Point<3>> used;
     for (auto &cell : result.cells)
       for (auto &v : cell.vertices)
@@ -234,8 +242,8 @@ namespace RestShape
         double     longest_edge = 0;
         const auto dets =
           corner_determinants(mesh.vertices, mesh.cells[c], longest_edge);
-        const double scale = std::pow(longest_edge, 3);
-        bool inverted = false, degenerate = !(longest_edge > 0);
+        const double scale    = std::pow(longest_edge, 3);
+        bool         inverted = false, degenerate = !(longest_edge > 0);
         for (const double det : dets)
           {
             if (std::abs(det) <= 1e-12 * scale)
@@ -281,17 +289,20 @@ namespace RestShape
       }
 
     private:
-      std::vector<Point<3>> &                              vertices;
+      std::vector<Point<3>>                              &vertices;
       std::map<std::array<unsigned int, 2>, unsigned int> index;
     };
 
-    /// A tetrahedron with positive orientation (two vertices swapped if needed).
+    /// A tetrahedron with positive orientation (two vertices swapped if
+    /// needed).
     CellData<3>
     oriented_tet(const std::vector<Point<3>> &v,
                  std::array<unsigned int, 4>  t,
                  const types::material_id     label)
     {
-      if (triple_product(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]], v[t[3]] - v[t[0]]) < 0)
+      if (triple_product(v[t[1]] - v[t[0]],
+                         v[t[2]] - v[t[0]],
+                         v[t[3]] - v[t[0]]) < 0)
         std::swap(t[1], t[2]);
       CellData<3> cell(4);
       cell.vertices.assign(t.begin(), t.end());
@@ -324,12 +335,14 @@ namespace RestShape
           }
         // The octahedron: diagonals join midpoints of opposite edges
         // (x y)-(z w); the equator around (x y)-(z w) is xz, xw, yw, yz.
-        static const unsigned int diagonals[3][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}};
+        static const unsigned int diagonals[3][4] = {{0, 1, 2, 3},
+                                                     {0, 2, 1, 3},
+                                                     {0, 3, 1, 2}};
         unsigned int              best            = 0;
-        double                    shortest        = std::numeric_limits<double>::max();
+        double                    shortest = std::numeric_limits<double>::max();
         for (unsigned int k = 0; k < 3; ++k)
           {
-            const auto & d      = diagonals[k];
+            const auto  &d      = diagonals[k];
             const double length = v[m[d[0]][d[1]]].distance(v[m[d[2]][d[3]]]);
             if (length < shortest)
               {
@@ -337,12 +350,14 @@ namespace RestShape
                 best     = k;
               }
           }
-        const auto &       d = diagonals[best];
+        const auto        &d = diagonals[best];
         const unsigned int x = d[0], y = d[1], z = d[2], w = d[3];
         const unsigned int equator[4] = {m[x][z], m[x][w], m[y][w], m[y][z]};
         for (unsigned int e = 0; e < 4; ++e)
-          fine.cells.push_back(oriented_tet(
-            v, {{m[x][y], m[z][w], equator[e], equator[(e + 1) % 4]}}, tet.material_id));
+          fine.cells.push_back(
+            oriented_tet(v,
+                         {{m[x][y], m[z][w], equator[e], equator[(e + 1) % 4]}},
+                         tet.material_id));
       }
     return fine;
   }
@@ -354,7 +369,7 @@ namespace RestShape
     // 3 cell centroid. Every hexahedron is numbered so that each of its
     // edges runs from lower to higher rank, which orients all edges of the
     // mesh consistently (no reordering needed).
-    MeshDescription                                      hexes;
+    MeshDescription                                     hexes;
     std::map<std::array<unsigned int, 2>, unsigned int> edge_vertex;
     std::map<std::array<unsigned int, 3>, unsigned int> face_vertex;
     hexes.vertices = tets.vertices;
@@ -381,7 +396,7 @@ namespace RestShape
 
     for (const auto &tet : tets.cells)
       {
-        const auto &       t      = tet.vertices;
+        const auto        &t      = tet.vertices;
         const unsigned int center = new_vertex(t);
         for (unsigned int i = 0; i < 4; ++i)
           {
@@ -414,21 +429,22 @@ namespace RestShape
   void
   write_gmsh(const MeshDescription &mesh,
              const double           length_unit,
-             const std::string &    file)
+             const std::string     &file)
   {
     Triangulation<3> tria;
     tria.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
-    write_gmsh(tria,
-               [&](const unsigned int v) { return tria.get_vertices()[v]; },
-               length_unit,
-               file);
+    write_gmsh(
+      tria,
+      [&](const unsigned int v) { return tria.get_vertices()[v]; },
+      length_unit,
+      file);
   }
 
   void
-  write_gmsh(const Triangulation<3> &                      tria,
+  write_gmsh(const Triangulation<3>                      &tria,
              const std::function<Point<3>(unsigned int)> &position,
-             const double                                  length_unit,
-             const std::string &                           file)
+             const double                                 length_unit,
+             const std::string                           &file)
   {
     std::vector<bool> used(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
@@ -445,8 +461,7 @@ namespace RestShape
           if (used[v])
             {
               const Point<3> p = position(v) / length_unit;
-              out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2]
-                  << '\n';
+              out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
             }
         out << "$EndNodes\n$Elements\n" << tria.n_active_cells() << '\n';
         // gmsh numbers hexahedron vertices counter-clockwise per face.
@@ -498,8 +513,8 @@ namespace RestShape
       tria = std::make_unique<parallel::distributed::Triangulation<3>>(comm);
 
     BoundingBox<3> box(mesh.vertices);
-    bounding_diameter =
-      box.get_boundary_points().first.distance(box.get_boundary_points().second);
+    bounding_diameter = box.get_boundary_points().first.distance(
+      box.get_boundary_points().second);
 
     description = std::move(mesh);
     create_triangulation();
@@ -522,12 +537,13 @@ namespace RestShape
         throw InputError(file, parameter, e.message);
       }
     if (rest.cells.size() != tria->n_global_active_cells())
-      throw InputError(file,
-                       parameter,
-                       "has " + std::to_string(rest.cells.size()) + " cells, the mesh " +
-                         std::to_string(tria->n_global_active_cells()) +
-                         "; expected the same cells in the same order (a rest_shape.msh "
-                         "written with the same Mesh settings)");
+      throw InputError(
+        file,
+        parameter,
+        "has " + std::to_string(rest.cells.size()) + " cells, the mesh " +
+          std::to_string(tria->n_global_active_cells()) +
+          "; expected the same cells in the same order (a rest_shape.msh "
+          "written with the same Mesh settings)");
     std::vector<Point<3>> positions(tria->n_vertices());
     std::vector<bool>     set(tria->n_vertices(), false);
     const double          tolerance = 1e-9 * bounding_diameter;
@@ -536,16 +552,20 @@ namespace RestShape
       {
         const auto &rest_cell = rest.cells[c++];
         if (rest_cell.vertices.size() != cell->n_vertices())
-          throw InputError(file, parameter, "the cell types differ from the mesh's");
+          throw InputError(file,
+                           parameter,
+                           "the cell types differ from the mesh's");
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           {
             const Point<3> &p = rest.vertices[rest_cell.vertices[v]];
             const auto      i = cell->vertex_index(v);
             if (set[i] && positions[i].distance(p) > tolerance)
-              throw InputError(file,
-                               parameter,
-                               "its cells are not connected like the mesh's (cell " +
-                                 std::to_string(c) + "); expected the same cells in the same order");
+              throw InputError(
+                file,
+                parameter,
+                "its cells are not connected like the mesh's (cell " +
+                  std::to_string(c) +
+                  "); expected the same cells in the same order");
             positions[i] = p;
             set[i]       = true;
           }
@@ -557,7 +577,9 @@ namespace RestShape
   LabelledMesh::create_triangulation()
   {
     tria->clear();
-    tria->create_triangulation(description.vertices, description.cells, SubCellData());
+    tria->create_triangulation(description.vertices,
+                               description.cells,
+                               SubCellData());
     if (!is_simplex())
       description = MeshDescription(); // p4est/deal.II refine hexahedra
   }
@@ -580,7 +602,8 @@ namespace RestShape
                                 const double         coarsen_fraction)
   {
     Assert(!is_simplex(), ExcInternalError());
-    if (auto *distributed = dynamic_cast<parallel::distributed::Triangulation<3> *>(tria.get()))
+    if (auto *distributed =
+          dynamic_cast<parallel::distributed::Triangulation<3> *>(tria.get()))
       parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
         *distributed, indicators, refine_fraction, coarsen_fraction);
     else

@@ -1,6 +1,3 @@
-#include <restshape/input_error.h>
-#include <restshape/obstacle.h>
-
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -12,9 +9,11 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <restshape/input_error.h>
+#include <restshape/obstacle.h>
+#include <unistd.h>
 
 #include <filesystem>
-#include <unistd.h>
 
 namespace RestShape
 {
@@ -31,8 +30,8 @@ namespace RestShape
 
   struct Obstacle::Data
   {
-    Mesh                                         mesh;
-    std::unique_ptr<Tree>                        tree;
+    Mesh                                                       mesh;
+    std::unique_ptr<Tree>                                      tree;
     std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
     /// Per face, the smoothed normals at its three corners (see gap()).
     std::vector<std::array<dealii::Tensor<1, 3>, 3>> corner_normals;
@@ -58,22 +57,29 @@ namespace RestShape
       for (const auto f : mesh.faces())
         {
           std::vector<CPoint> c;
-          for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          for (const auto v :
+               CGAL::vertices_around_face(mesh.halfedge(f), mesh))
             c.push_back(mesh.point(v));
-          area_normal[f.idx()] = 0.5 * tensor(CGAL::cross_product(c[1] - c[0], c[2] - c[0]));
+          area_normal[f.idx()] =
+            0.5 * tensor(CGAL::cross_product(c[1] - c[0], c[2] - c[0]));
         }
       const double cos_feature = std::cos(feature_angle);
-      std::vector<std::array<dealii::Tensor<1, 3>, 3>> result(mesh.number_of_faces());
+      std::vector<std::array<dealii::Tensor<1, 3>, 3>> result(
+        mesh.number_of_faces());
       for (const auto f : mesh.faces())
         {
-          const dealii::Tensor<1, 3> own = area_normal[f.idx()] / area_normal[f.idx()].norm();
+          const dealii::Tensor<1, 3> own =
+            area_normal[f.idx()] / area_normal[f.idx()].norm();
           unsigned int corner = 0;
-          for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          for (const auto v :
+               CGAL::vertices_around_face(mesh.halfedge(f), mesh))
             {
               dealii::Tensor<1, 3> sum;
-              for (const auto g : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+              for (const auto g :
+                   CGAL::faces_around_target(mesh.halfedge(v), mesh))
                 if (g != Mesh::null_face() &&
-                    area_normal[g.idx()] * own >= cos_feature * area_normal[g.idx()].norm())
+                    area_normal[g.idx()] * own >=
+                      cos_feature * area_normal[g.idx()].norm())
                   sum += area_normal[g.idx()];
               result[f.idx()][corner++] = sum / sum.norm();
             }
@@ -82,19 +88,26 @@ namespace RestShape
     }
   } // namespace
 
-  Obstacle::Obstacle(const std::string &file, const double length_unit, const bool inside)
+  Obstacle::Obstacle(const std::string &file,
+                     const double       length_unit,
+                     const bool         inside)
     : data(std::make_unique<Data>())
     , inside(inside)
   {
     namespace fs = std::filesystem;
     std::error_code ec;
     if (!fs::is_regular_file(file, ec) || ::access(file.c_str(), R_OK) != 0)
-      throw InputError(file, parameter, "no such readable file; expected a closed triangulated surface (.stl, .off or .obj)");
+      throw InputError(
+        file,
+        parameter,
+        "no such readable file; expected a closed triangulated surface (.stl, .off or .obj)");
     const std::string extension = fs::path(file).extension().string();
     if (extension != ".stl" && extension != ".off" && extension != ".obj" &&
         extension != ".STL" && extension != ".OFF" && extension != ".OBJ")
-      throw InputError(file, parameter,
-                       "unsupported format '" + extension + "'; expected .stl, .off or .obj");
+      throw InputError(file,
+                       parameter,
+                       "unsupported format '" + extension +
+                         "'; expected .stl, .off or .obj");
 
     // The PMP reader repairs polygon soups (STL stores every triangle with
     // its own vertices) and orients them consistently; the global
@@ -110,28 +123,37 @@ namespace RestShape
         ok = false;
       }
     if (!ok || mesh.number_of_faces() == 0)
-      throw InputError(file, parameter,
-                       "cannot be read as a polygon surface (or it is not 2-manifold)");
+      throw InputError(
+        file,
+        parameter,
+        "cannot be read as a polygon surface (or it is not 2-manifold)");
     if (!CGAL::is_triangle_mesh(mesh))
       PMP::triangulate_faces(mesh);
     if (!CGAL::is_closed(mesh))
-      throw InputError(file, parameter,
-                       "the surface is open (it has border edges); expected a closed surface");
+      throw InputError(
+        file,
+        parameter,
+        "the surface is open (it has border edges); expected a closed surface");
     if (PMP::does_self_intersect(mesh))
       throw InputError(file, parameter, "the surface intersects itself");
     if (!PMP::is_outward_oriented(mesh))
-      throw InputError(file, parameter,
-                       "the surface is oriented inward (flipped normals); expected "
-                       "normals pointing out of the enclosed region");
+      throw InputError(
+        file,
+        parameter,
+        "the surface is oriented inward (flipped normals); expected "
+        "normals pointing out of the enclosed region");
     for (const auto v : mesh.vertices())
       {
         const CPoint &p = mesh.point(v);
-        mesh.point(v)   = CPoint(p.x() * length_unit, p.y() * length_unit, p.z() * length_unit);
+        mesh.point(v) =
+          CPoint(p.x() * length_unit, p.y() * length_unit, p.z() * length_unit);
       }
 
-    data->tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
+    data->tree =
+      std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
     data->tree->accelerate_distance_queries();
-    data->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*data->tree);
+    data->side =
+      std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*data->tree);
     data->corner_normals = smoothed_corner_normals(mesh, 30. * M_PI / 180.);
   }
 
@@ -145,7 +167,8 @@ namespace RestShape
     const CGAL::Bounded_side position = (*data->side)(p);
     const bool allowed = inside ? position != CGAL::ON_UNBOUNDED_SIDE :
                                   position != CGAL::ON_BOUNDED_SIDE;
-    const dealii::Tensor<1, 3> to_point({p.x() - closest.x(), p.y() - closest.y(), p.z() - closest.z()});
+    const dealii::Tensor<1, 3> to_point(
+      {p.x() - closest.x(), p.y() - closest.y(), p.z() - closest.z()});
     const double distance = to_point.norm();
 
     Gap result;
@@ -159,36 +182,41 @@ namespace RestShape
     // each other) and keeps sharp edges sharp, so flat obstacles and boxes
     // get their exact face normals.
     std::vector<CPoint> c;
-    for (const auto v : CGAL::vertices_around_face(data->mesh.halfedge(face), data->mesh))
+    for (const auto v :
+         CGAL::vertices_around_face(data->mesh.halfedge(face), data->mesh))
       c.push_back(data->mesh.point(v));
     const auto   n_face = CGAL::cross_product(c[1] - c[0], c[2] - c[0]);
     const double area2  = n_face.squared_length();
     std::array<double, 3> weight;
     for (unsigned int i = 0; i < 3; ++i)
       weight[i] = std::max(0.,
-                           CGAL::cross_product(c[(i + 2) % 3] - c[(i + 1) % 3], closest - c[(i + 1) % 3]) *
+                           CGAL::cross_product(c[(i + 2) % 3] - c[(i + 1) % 3],
+                                               closest - c[(i + 1) % 3]) *
                              n_face / area2);
-    const auto &         corners = data->corner_normals[face.idx()];
-    dealii::Tensor<1, 3> normal  = weight[0] * corners[0] + weight[1] * corners[1] +
-                                  weight[2] * corners[2];
+    const auto          &corners = data->corner_normals[face.idx()];
+    dealii::Tensor<1, 3> normal =
+      weight[0] * corners[0] + weight[1] * corners[1] + weight[2] * corners[2];
     if (normal.norm() < 1e-12)
       normal = tensor(n_face);
     // Corner normals point out of the enclosed region.
     const double to_allowed = inside ? -1. : 1.;
     result.normal           = to_allowed * normal / normal.norm();
     const dealii::Tensor<1, 3> face_normal = tensor(n_face) / std::sqrt(area2);
-    result.gradient = distance > 1e-9 * std::sqrt(area2) ?
-                        dealii::Tensor<1, 3>((allowed ? 1. : -1.) * to_point / distance) :
-                        to_allowed * face_normal;
+    result.gradient =
+      distance > 1e-9 * std::sqrt(area2) ?
+        dealii::Tensor<1, 3>((allowed ? 1. : -1.) * to_point / distance) :
+        to_allowed * face_normal;
     return result;
   }
 
   unsigned int
-  Obstacle::n_crossings(const dealii::Point<3> &a, const dealii::Point<3> &b) const
+  Obstacle::n_crossings(const dealii::Point<3> &a,
+                        const dealii::Point<3> &b) const
   {
     if (a.distance(b) == 0)
       return 0;
-    const Kernel::Segment_3 segment(CPoint(a[0], a[1], a[2]), CPoint(b[0], b[1], b[2]));
+    const Kernel::Segment_3 segment(CPoint(a[0], a[1], a[2]),
+                                    CPoint(b[0], b[1], b[2]));
     return data->tree->number_of_intersected_primitives(segment);
   }
 

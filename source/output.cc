@@ -31,8 +31,9 @@ namespace RestShape
       {}
 
       void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
-                            std::vector<Vector<double>> &computed) const override
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<3> &inputs,
+        std::vector<Vector<double>>              &computed) const override
       {
         for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
           {
@@ -82,7 +83,7 @@ namespace RestShape
             out << '"';
             for (const char c : *s)
               out << ((c == '"' || c == '\\') ? std::string("\\") + c :
-                                                 std::string(1, c));
+                                                std::string(1, c));
             out << '"';
           }
         else
@@ -117,7 +118,7 @@ namespace RestShape
 
   void
   OutputWriter::write_text(
-    const std::string &                        name,
+    const std::string                         &name,
     const std::function<void(std::ostream &)> &write) const
   {
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -125,8 +126,8 @@ namespace RestShape
   }
 
   void
-  OutputWriter::write_csv(const std::string &                     name,
-                          const std::vector<std::string> &        header,
+  OutputWriter::write_csv(const std::string                      &name,
+                          const std::vector<std::string>         &header,
                           const std::vector<std::vector<double>> &rows) const
   {
     write_text(name, [&](std::ostream &out) {
@@ -142,16 +143,16 @@ namespace RestShape
   }
 
   void
-  OutputWriter::write_fields(const ForwardProblem &         problem,
+  OutputWriter::write_fields(const ForwardProblem          &problem,
                              const unsigned int             step,
                              const double                   time,
                              const std::vector<NodalField> &extra_nodal,
-                             const std::vector<CellField> & extra_cell,
-                             const std::string &            name)
+                             const std::vector<CellField>  &extra_cell,
+                             const std::string             &name)
   {
     const DoFHandler<3> &dof_handler = problem.dof_handler();
-    const IndexSet &     owned       = problem.locally_owned_dofs();
-    const IndexSet &     relevant    = problem.locally_relevant_dofs();
+    const IndexSet      &owned       = problem.locally_owned_dofs();
+    const IndexSet      &relevant    = problem.locally_relevant_dofs();
     const double         to_unit     = 1. / length_unit;
 
     // Deformed geometry X + d, in the output length unit, as the Euler
@@ -162,8 +163,8 @@ namespace RestShape
         euler[node.dofs[c]] =
           (node.position[c] + problem.displacement()[node.dofs[c]]) * to_unit;
     euler.update_ghost_values();
-    MappingFEField<3, 3, LinearAlgebra::distributed::Vector<double>>
-      deformed(dof_handler, euler);
+    MappingFEField<3, 3, LinearAlgebra::distributed::Vector<double>> deformed(
+      dof_handler, euler);
 
     // Displacement from the rest shape: d - w.
     VectorType displacement(owned, comm);
@@ -175,14 +176,17 @@ namespace RestShape
 
     DataOut<3> data_out;
     data_out.attach_dof_handler(dof_handler);
-    const auto as_vector = std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-      3, DataComponentInterpretation::component_is_part_of_vector);
-    const auto as_scalars = std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-      3, DataComponentInterpretation::component_is_scalar);
-    data_out.add_data_vector(displacement_ghost,
-                             std::vector<std::string>(3, "displacement_" + length_unit_name),
-                             DataOut<3>::type_dof_data,
-                             as_vector);
+    const auto as_vector =
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        3, DataComponentInterpretation::component_is_part_of_vector);
+    const auto as_scalars =
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        3, DataComponentInterpretation::component_is_scalar);
+    data_out.add_data_vector(
+      displacement_ghost,
+      std::vector<std::string>(3, "displacement_" + length_unit_name),
+      DataOut<3>::type_dof_data,
+      as_vector);
     std::vector<VectorType>                 scaled(extra_nodal.size());
     std::vector<std::unique_ptr<Magnitude>> magnitudes;
     for (unsigned int f = 0; f < extra_nodal.size(); ++f)
@@ -191,23 +195,25 @@ namespace RestShape
         VectorType tmp(owned, comm);
         tmp = *extra_nodal[f].vector;
         tmp *= extra_nodal[f].scale;
-        scaled[f]          = tmp;
+        scaled[f]         = tmp;
         const bool vector = extra_nodal[f].names.size() == 1;
-        data_out.add_data_vector(scaled[f],
-                                 vector ? std::vector<std::string>(
-                                            3, extra_nodal[f].names[0]) :
-                                          extra_nodal[f].names,
-                                 DataOut<3>::type_dof_data,
-                                 vector ? as_vector : as_scalars);
+        data_out.add_data_vector(
+          scaled[f],
+          vector ? std::vector<std::string>(3, extra_nodal[f].names[0]) :
+                   extra_nodal[f].names,
+          DataOut<3>::type_dof_data,
+          vector ? as_vector : as_scalars);
         if (!extra_nodal[f].magnitude_name.empty())
           {
-            magnitudes.push_back(std::make_unique<Magnitude>(extra_nodal[f].magnitude_name));
+            magnitudes.push_back(
+              std::make_unique<Magnitude>(extra_nodal[f].magnitude_name));
             data_out.add_data_vector(scaled[f], *magnitudes.back());
           }
       }
 
-    const unsigned int n_cells = problem.mesh().triangulation().n_active_cells();
-    Vector<float>      labels(n_cells), subdomain(n_cells);
+    const unsigned int n_cells =
+      problem.mesh().triangulation().n_active_cells();
+    Vector<float> labels(n_cells), subdomain(n_cells);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -216,9 +222,13 @@ namespace RestShape
         }
     const Vector<float> stress = problem.von_mises_stress();
     data_out.add_data_vector(labels, "label", DataOut<3>::type_cell_data);
-    data_out.add_data_vector(stress, "von_mises_Pa", DataOut<3>::type_cell_data);
+    data_out.add_data_vector(stress,
+                             "von_mises_Pa",
+                             DataOut<3>::type_cell_data);
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
-      data_out.add_data_vector(subdomain, "subdomain", DataOut<3>::type_cell_data);
+      data_out.add_data_vector(subdomain,
+                               "subdomain",
+                               DataOut<3>::type_cell_data);
     for (const CellField &f : extra_cell)
       data_out.add_data_vector(f.values, f.name, DataOut<3>::type_cell_data);
 
@@ -231,11 +241,13 @@ namespace RestShape
 
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const std::string  base    = name.empty() ? "solution-" + Utilities::int_to_string(step, 4) : name;
+    const std::string  base =
+      name.empty() ? "solution-" + Utilities::int_to_string(step, 4) : name;
     std::vector<std::string> pieces;
     for (unsigned int r = 0; r < n_ranks; ++r)
-      pieces.push_back(n_ranks == 1 ? base + ".vtu" :
-                                      base + "." + Utilities::int_to_string(r, 4) + ".vtu");
+      pieces.push_back(n_ranks == 1 ?
+                         base + ".vtu" :
+                         base + "." + Utilities::int_to_string(r, 4) + ".vtu");
     write_file_atomically(path(pieces[rank]),
                           [&](std::ostream &out) { data_out.write_vtu(out); });
     std::string record = pieces[0];

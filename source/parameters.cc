@@ -100,7 +100,7 @@ namespace RestShape
     file = prm.get("File");
     if (file.empty())
       throw InputError("", "Mesh/File", "no mesh file given");
-    rest_shape_file = dealii::Utilities::trim(prm.get("Rest shape file"));
+    rest_shape_file  = dealii::Utilities::trim(prm.get("Rest shape file"));
     length_unit_name = prm.get("Length unit");
     length_unit = length_unit_in_metres(length_unit_name, "Mesh/Length unit");
     cell_type   = prm.get("Cell type") == "hexahedra" ? CellType::hexahedra :
@@ -118,22 +118,23 @@ namespace RestShape
                       Patterns::Integer(1, 2),
                       "Degree of the Lagrange elements: 1 (P1 tetrahedra or "
                       "Q1 hexahedra) or 2 (P2 / Q2).");
-    prm.declare_entry("Tangent",
-                      "consistent",
-                      Patterns::Selection("consistent|projected|adaptive|warped"),
-                      "Newton tangent of the co-rotational law. consistent: "
-                      "exact derivative including the derivative of the "
-                      "rotation (quadratic convergence). projected: the "
-                      "exact derivative with its negative eigenvalues (the "
-                      "rotational modes of compressed points) set to zero, "
-                      "so the stiffness stays positive semi-definite "
-                      "(projected Newton; equal to consistent wherever that "
-                      "is positive; converges linearly where it differs). "
-                      "adaptive: consistent, but after a Newton step whose "
-                      "line search had to shorten the step, one step with "
-                      "the projected tangent. warped: R K0 R^T as in SOFA and Mueller "
-                      "et al. 2002 (no dR term; linear convergence), kept "
-                      "for comparison.");
+    prm.declare_entry(
+      "Tangent",
+      "consistent",
+      Patterns::Selection("consistent|projected|adaptive|warped"),
+      "Newton tangent of the co-rotational law. consistent: "
+      "exact derivative including the derivative of the "
+      "rotation (quadratic convergence). projected: the "
+      "exact derivative with its negative eigenvalues (the "
+      "rotational modes of compressed points) set to zero, "
+      "so the stiffness stays positive semi-definite "
+      "(projected Newton; equal to consistent wherever that "
+      "is positive; converges linearly where it differs). "
+      "adaptive: consistent, but after a Newton step whose "
+      "line search had to shorten the step, one step with "
+      "the projected tangent. warped: R K0 R^T as in SOFA and Mueller "
+      "et al. 2002 (no dR term; linear convergence), kept "
+      "for comparison.");
     prm.leave_subsection();
   }
 
@@ -141,7 +142,7 @@ namespace RestShape
   DiscretizationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    degree  = prm.get_integer("Polynomial degree");
+    degree                         = prm.get_integer("Polynomial degree");
     const std::string tangent_name = prm.get("Tangent");
     tangent = tangent_name == "warped"    ? TangentType::warped :
               tangent_name == "projected" ? TangentType::projected :
@@ -246,7 +247,7 @@ namespace RestShape
   BoundaryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
-    fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
+    fixed_labels      = parse_fixed_labels(prm.get("Fixed labels"),
                                       "Boundary conditions/Fixed labels");
     support_stiffness = prm.get_double("Elastic support stiffness");
     if (!(support_stiffness >= 0))
@@ -254,8 +255,9 @@ namespace RestShape
                        "Boundary conditions/Elastic support stiffness",
                        "'" + prm.get("Elastic support stiffness") +
                          "': expected a stiffness >= 0 in N/m^3");
-    support_labels = parse_label_set(prm.get("Elastic support labels"),
-                                     "Boundary conditions/Elastic support labels");
+    support_labels =
+      parse_label_set(prm.get("Elastic support labels"),
+                      "Boundary conditions/Elastic support labels");
     prm.leave_subsection();
   }
 
@@ -296,12 +298,14 @@ namespace RestShape
   LoadParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loads");
-    gravity  = parse_vector(prm.get("Gravity"), "Loads/Gravity");
-    pressure = prm.get_double("Surface pressure");
+    gravity       = parse_vector(prm.get("Gravity"), "Loads/Gravity");
+    pressure      = prm.get_double("Surface pressure");
     fluid_density = prm.get_double("Fluid density");
     if (!(fluid_density >= 0))
-      throw InputError("", "Loads/Fluid density",
-                       "'" + prm.get("Fluid density") + "': expected a density >= 0 in kg/m^3");
+      throw InputError("",
+                       "Loads/Fluid density",
+                       "'" + prm.get("Fluid density") +
+                         "': expected a density >= 0 in kg/m^3");
     pressure_labels =
       parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
     prm.leave_subsection();
@@ -354,9 +358,9 @@ namespace RestShape
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    linear_solver = prm.get("Linear solver") == "cg-amg" ?
-                      LinearSolverType::cg_amg :
-                      LinearSolverType::direct;
+    linear_solver          = prm.get("Linear solver") == "cg-amg" ?
+                               LinearSolverType::cg_amg :
+                               LinearSolverType::direct;
     newton_tolerance       = prm.get_double("Newton tolerance");
     max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
     linear_tolerance       = prm.get_double("Linear solver tolerance");
@@ -401,8 +405,8 @@ namespace RestShape
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory = prm.get("Directory");
-    write_vtu = prm.get_bool("Write VTU");
+    directory       = prm.get("Directory");
+    write_vtu       = prm.get_bool("Write VTU");
     write_nodal_csv = prm.get_bool("Write nodal CSV");
     prm.leave_subsection();
     if (directory.empty())
@@ -436,7 +440,8 @@ namespace RestShape
   {
     prm.enter_subsection("Verification");
     exact_displacement = dealii::Utilities::trim(prm.get("Exact displacement"));
-    exact_rest_displacement = dealii::Utilities::trim(prm.get("Exact rest displacement"));
+    exact_rest_displacement =
+      dealii::Utilities::trim(prm.get("Exact rest displacement"));
     prm.leave_subsection();
   }
 
@@ -481,9 +486,9 @@ namespace RestShape
   RefinementParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Adaptive refinement");
-    cycles   = prm.get_integer("Cycles");
-    strategy = prm.get("Strategy") == "adaptive" ? Strategy::adaptive :
-                                                   Strategy::global;
+    cycles = prm.get_integer("Cycles");
+    strategy =
+      prm.get("Strategy") == "adaptive" ? Strategy::adaptive : Strategy::global;
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
     if (refine_fraction + coarsen_fraction > 1)
@@ -547,14 +552,18 @@ namespace RestShape
     prm.enter_subsection("Contact");
     obstacle_file    = dealii::Utilities::trim(prm.get("Obstacle file"));
     length_unit_name = prm.get("Length unit");
-    length_unit      = length_unit_in_metres(length_unit_name, "Contact/Length unit");
-    inside           = prm.get("Side") == "inside";
-    labels = parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
+    length_unit =
+      length_unit_in_metres(length_unit_name, "Contact/Length unit");
+    inside = prm.get("Side") == "inside";
+    labels =
+      parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
     active_set_constant = prm.get_double("Active set constant");
     free_updates        = prm.get_integer("Free active-set updates");
     prm.leave_subsection();
     if (!(active_set_constant > 0))
-      throw InputError("", "Contact/Active set constant", "expected a positive number");
+      throw InputError("",
+                       "Contact/Active set constant",
+                       "expected a positive number");
   }
 
   void
@@ -604,8 +613,8 @@ namespace RestShape
   InverseParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Inverse problem");
-    enabled        = prm.get_bool("Enabled");
-    measure        = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
+    enabled = prm.get_bool("Enabled");
+    measure = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
     tolerance      = prm.get_double("Tolerance") * 1e-3;
     max_iterations = prm.get_integer("Maximum iterations");
     acceleration   = prm.get("Acceleration") == "none" ? Acceleration::none :
@@ -613,7 +622,9 @@ namespace RestShape
     anderson_depth = prm.get_integer("Anderson depth");
     prm.leave_subsection();
     if (enabled && !(tolerance > 0))
-      throw InputError("", "Inverse problem/Tolerance", "expected a positive tolerance in mm");
+      throw InputError("",
+                       "Inverse problem/Tolerance",
+                       "expected a positive tolerance in mm");
   }
 
   void

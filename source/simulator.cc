@@ -8,9 +8,9 @@ namespace RestShape
 {
   using namespace dealii;
 
-  Simulator::Simulator(const Parameters &      parameters,
+  Simulator::Simulator(const Parameters       &parameters,
                        const ParameterHandler &prm,
-                       const std::string &     prm_file,
+                       const std::string      &prm_file,
                        const MPI_Comm          comm)
     : parameters(parameters)
     , prm(prm)
@@ -25,10 +25,12 @@ namespace RestShape
   {
     make_mesh();
     check_scene();
-    forward = std::make_unique<ForwardProblem>(parameters, *mesh, *materials, timer, pcout);
+    forward = std::make_unique<ForwardProblem>(
+      parameters, *mesh, *materials, timer, pcout);
     if (parameters.contact.enabled())
       {
-        contact = std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+        contact =
+          std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
         forward->set_contact(contact.get());
       }
     setup_problems();
@@ -42,7 +44,8 @@ namespace RestShape
         if (cycle > 0)
           {
             TimerOutput::Scope scope(timer, "Refinement");
-            if (parameters.refinement.strategy == RefinementParameters::Strategy::adaptive)
+            if (parameters.refinement.strategy ==
+                RefinementParameters::Strategy::adaptive)
               mesh->refine_adaptive(estimate.indicators,
                                     parameters.refinement.refine_fraction,
                                     parameters.refinement.coarsen_fraction);
@@ -51,9 +54,11 @@ namespace RestShape
             setup_problems();
             rest = forward->zero_vector();
           }
-        pcout << "Cycle " << cycle << ": " << mesh->triangulation().n_global_active_cells()
-              << " cells, " << forward->dof_handler().n_dofs() << " DoFs" << std::endl;
-        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest) : solve_forward(rest);
+        pcout << "Cycle " << cycle << ": "
+              << mesh->triangulation().n_global_active_cells() << " cells, "
+              << forward->dof_handler().n_dofs() << " DoFs" << std::endl;
+        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest) :
+                                             solve_forward(rest);
         postprocess(cycle, stats);
       }
     if (parameters.prestress_comparison.enabled)
@@ -66,11 +71,13 @@ namespace RestShape
   Simulator::make_mesh()
   {
     TimerOutput::Scope scope(timer, "Setup");
-    mesh      = std::make_unique<LabelledMesh>(parameters.mesh, comm);
-    materials = std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
+    mesh = std::make_unique<LabelledMesh>(parameters.mesh, comm);
+    materials =
+      std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
     if (!parameters.verification.exact_displacement.empty())
-      exact = std::make_unique<ExactDisplacement>(parameters.verification.exact_displacement,
-                                                  parameters.mesh.length_unit);
+      exact = std::make_unique<ExactDisplacement>(
+        parameters.verification.exact_displacement,
+        parameters.mesh.length_unit);
     if (!parameters.verification.exact_rest_displacement.empty())
       exact_rest = std::make_unique<ExactDisplacement>(
         parameters.verification.exact_rest_displacement,
@@ -89,12 +96,13 @@ namespace RestShape
   Simulator::check_scene() const
   {
     const std::set<Label> labels = mesh->labels();
-    const auto            check  = [&](const Label l, const std::string &parameter) {
+    const auto check = [&](const Label l, const std::string &parameter) {
       if (!labels.count(l))
         throw InputError(prm_file,
                          parameter,
                          "label " + std::to_string(l) +
-                           " is not a label of the mesh (labels: " + to_string(labels) + ")");
+                           " is not a label of the mesh (labels: " +
+                           to_string(labels) + ")");
     };
     for (const auto &f : parameters.boundary.fixed_labels)
       check(f.label, "Boundary conditions/Fixed labels");
@@ -102,18 +110,22 @@ namespace RestShape
       check(l, "Loads/Pressure labels");
     for (const Label l : parameters.contact.labels)
       check(l, "Contact/Contact labels");
-    if (parameters.refinement.strategy == RefinementParameters::Strategy::adaptive &&
+    if (parameters.refinement.strategy ==
+          RefinementParameters::Strategy::adaptive &&
         mesh->is_simplex())
-      throw InputError(prm_file,
-                       "Adaptive refinement/Strategy",
-                       "adaptive refinement needs hexahedra: deal.II 9.4 has no "
-                       "hanging-node constraints on tetrahedra; use Mesh/Cell type "
-                       "= hexahedra or Strategy = global");
-    if (!parameters.mesh.rest_shape_file.empty() && parameters.refinement.cycles > 0)
-      throw InputError(prm_file,
-                       "Mesh/Rest shape file",
-                       "a rest shape file describes one mesh; expected Adaptive "
-                       "refinement/Cycles = 0 (use Mesh/Global refinements)");
+      throw InputError(
+        prm_file,
+        "Adaptive refinement/Strategy",
+        "adaptive refinement needs hexahedra: deal.II 9.4 has no "
+        "hanging-node constraints on tetrahedra; use Mesh/Cell type "
+        "= hexahedra or Strategy = global");
+    if (!parameters.mesh.rest_shape_file.empty() &&
+        parameters.refinement.cycles > 0)
+      throw InputError(
+        prm_file,
+        "Mesh/Rest shape file",
+        "a rest shape file describes one mesh; expected Adaptive "
+        "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
     if (!forward || contact || parameters.boundary.support_stiffness > 0)
       return;
@@ -125,12 +137,13 @@ namespace RestShape
         n_fixed[c] += forward->is_fixed(node.dofs[c]);
     for (unsigned int c = 0; c < 3; ++c)
       if (Utilities::MPI::sum(n_fixed[c], comm) == 0)
-        throw InputError(prm_file,
-                         "Boundary conditions/Fixed labels",
-                         std::string("no node is fixed in ") + "xyz"[c] +
-                           " and there is no contact or elastic support: the problem is singular "
-                           "(free rigid-body motion); expected fixed labels that "
-                           "hold every component");
+        throw InputError(
+          prm_file,
+          "Boundary conditions/Fixed labels",
+          std::string("no node is fixed in ") + "xyz"[c] +
+            " and there is no contact or elastic support: the problem is singular "
+            "(free rigid-body motion); expected fixed labels that "
+            "hold every component");
   }
 
   void
@@ -140,10 +153,12 @@ namespace RestShape
     if (contact)
       {
         contact->setup();
-        contact->gap_tolerance = parameters.solver.newton_tolerance * mesh->diameter();
+        contact->gap_tolerance =
+          parameters.solver.newton_tolerance * mesh->diameter();
         pcout << "Contact: " << parameters.contact.obstacle_file << ", "
               << contact->n_candidates() << " candidate nodes, allowed side: "
-              << (parameters.contact.inside ? "inside" : "outside") << std::endl;
+              << (parameters.contact.inside ? "inside" : "outside")
+              << std::endl;
       }
   }
 
@@ -152,9 +167,10 @@ namespace RestShape
   {
     if (parameters.mesh.rest_shape_file.empty())
       return forward->zero_vector();
-    const std::vector<Point<3>> rest = mesh->read_rest_shape(parameters.mesh.rest_shape_file);
-    const auto &               vertices = mesh->triangulation().get_vertices();
-    std::vector<Tensor<1, 3>>  w(rest.size());
+    const std::vector<Point<3>> rest =
+      mesh->read_rest_shape(parameters.mesh.rest_shape_file);
+    const auto               &vertices = mesh->triangulation().get_vertices();
+    std::vector<Tensor<1, 3>> w(rest.size());
     for (unsigned int v = 0; v < rest.size(); ++v)
       w[v] = rest[v] - vertices[v];
     const VectorType result = forward->interpolate_vertex_field(w);
@@ -162,7 +178,8 @@ namespace RestShape
     if (!forward->rest_shape_is_valid(result, n_bad))
       throw InputError(parameters.mesh.rest_shape_file,
                        "Mesh/Rest shape file",
-                       std::to_string(n_bad) + " cells are inverted relative to the mesh");
+                       std::to_string(n_bad) +
+                         " cells are inverted relative to the mesh");
     pcout << "Rest shape: " << parameters.mesh.rest_shape_file << std::endl;
     return result;
   }
@@ -182,21 +199,25 @@ namespace RestShape
   SolveStatistics
   Simulator::solve_forward(const VectorType &rest)
   {
-    forward->set_state(forward->zero_vector(), forward->zero_vector(), LoadState());
+    forward->set_state(forward->zero_vector(),
+                       forward->zero_vector(),
+                       LoadState());
     const SolveStatistics stats = forward->solve(forward->scene_load(), rest);
-    pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED") << " in "
-          << stats.newton_iterations << " Newton iterations, " << stats.load_steps
-          << " load step(s)" << std::endl;
+    pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
+          << " in " << stats.newton_iterations << " Newton iterations, "
+          << stats.load_steps << " load step(s)" << std::endl;
     if (!stats.converged)
       {
         write_summary(stats);
-        throw SolverFailure("the forward solve did not converge: " + stats.failure);
+        throw SolverFailure("the forward solve did not converge: " +
+                            stats.failure);
       }
     return stats;
   }
 
   SolveStatistics
-  Simulator::solve_inverse(const unsigned int cycle, const VectorType &initial_rest)
+  Simulator::solve_inverse(const unsigned int cycle,
+                           const VectorType  &initial_rest)
   {
     InverseProblem inverse(parameters.inverse,
                            *forward,
@@ -243,30 +264,34 @@ namespace RestShape
       {
         stats.failure = inverse_result.reason;
         write_summary(stats);
-        throw SolverFailure("the inverse iteration did not converge: " + inverse_result.reason);
+        throw SolverFailure("the inverse iteration did not converge: " +
+                            inverse_result.reason);
       }
-    pcout << "  Rest shape found in " << inverse_result.iterations << " iterations ("
-          << inverse_result.forward_solves << " forward solves, "
-          << inverse_result.newton_iterations << " Newton iterations): mean error "
-          << inverse_result.mean_error * 1e3 << " mm, max " << inverse_result.max_error * 1e3
-          << " mm" << std::endl;
+    pcout << "  Rest shape found in " << inverse_result.iterations
+          << " iterations (" << inverse_result.forward_solves
+          << " forward solves, " << inverse_result.newton_iterations
+          << " Newton iterations): mean error "
+          << inverse_result.mean_error * 1e3 << " mm, max "
+          << inverse_result.max_error * 1e3 << " mm" << std::endl;
 
     // The rest shape as a mesh (vertices only: the edge nodes of quadratic
     // elements are not in a linear mesh file), and the pre-stressed state.
-    const VectorType &w        = forward->rest_displacement();
-    const auto &      vertices = mesh->triangulation().get_vertices();
+    const VectorType     &w        = forward->rest_displacement();
+    const auto           &vertices = mesh->triangulation().get_vertices();
     std::vector<Point<3>> rest_positions(vertices);
     for (const auto &cell : forward->dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           for (unsigned int c = 0; c < 3; ++c)
             rest_positions[cell->vertex_index(v)][c] =
-              vertices[cell->vertex_index(v)][c] + w[cell->vertex_dof_index(v, c)];
+              vertices[cell->vertex_index(v)][c] +
+              w[cell->vertex_dof_index(v, c)];
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_gmsh(mesh->triangulation(),
-                 [&](unsigned int v) { return rest_positions[v]; },
-                 parameters.mesh.length_unit,
-                 output->path("rest_shape.msh"));
+      write_gmsh(
+        mesh->triangulation(),
+        [&](unsigned int v) { return rest_positions[v]; },
+        parameters.mesh.length_unit,
+        output->path("rest_shape.msh"));
     return stats;
   }
 
@@ -278,16 +303,20 @@ namespace RestShape
     // (2) the model stress-free in the mesh geometry (no other load).
     const VectorType d_eq   = forward->owned_copy(forward->displacement());
     const VectorType w_rest = forward->owned_copy(forward->rest_displacement());
-    const LoadState  scene = forward->scene_load();
-    const Tensor<1, 3> extra = parameters.prestress_comparison.extra_acceleration;
-    pcout << "Prestress comparison: extra body force " << extra << " m/s^2" << std::endl;
+    const LoadState  scene  = forward->scene_load();
+    const Tensor<1, 3> extra =
+      parameters.prestress_comparison.extra_acceleration;
+    pcout << "Prestress comparison: extra body force " << extra << " m/s^2"
+          << std::endl;
     LoadState loaded = scene;
     loaded.acceleration += extra;
-    const auto check = [this](const SolveStatistics &stats, const std::string &model) {
+    const auto check = [this](const SolveStatistics &stats,
+                              const std::string     &model) {
       if (stats.converged)
         return;
       SolveStatistics failed = stats;
-      failed.failure         = "prestress comparison, " + model + " model: " + stats.failure;
+      failed.failure =
+        "prestress comparison, " + model + " model: " + stats.failure;
       write_summary(failed);
       throw SolverFailure("the " + failed.failure);
     };
@@ -298,36 +327,43 @@ namespace RestShape
     u1 -= d_eq;
     const auto prestressed = forward->nodal_norms(u1);
 
-    forward->set_state(forward->zero_vector(), forward->zero_vector(), LoadState());
+    forward->set_state(forward->zero_vector(),
+                       forward->zero_vector(),
+                       LoadState());
     if (contact)
       contact->reset();
     LoadState extra_only;
     extra_only.acceleration = extra;
-    const SolveStatistics s2 = forward->solve(extra_only, forward->zero_vector());
+    const SolveStatistics s2 =
+      forward->solve(extra_only, forward->zero_vector());
     check(s2, "not pre-stressed");
     const auto unstressed = forward->nodal_norms(forward->displacement());
 
     const auto increase = [](double a, double b) { return 100. * (b - a) / a; };
     output->write_text("prestress_comparison.csv", [&](std::ostream &out) {
-      out << std::setprecision(6)
-          << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
-          << "prestressed," << prestressed.first * 1e3 << ',' << prestressed.second * 1e3 << ','
-          << s1.newton_iterations << ',' << s1.converged << '\n'
-          << "not_prestressed," << unstressed.first * 1e3 << ',' << unstressed.second * 1e3
-          << ',' << s2.newton_iterations << ',' << s2.converged << '\n'
-          << "increase_percent," << increase(prestressed.first, unstressed.first) << ','
-          << increase(prestressed.second, unstressed.second) << ",,\n";
+      out
+        << std::setprecision(6)
+        << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
+        << "prestressed," << prestressed.first * 1e3 << ','
+        << prestressed.second * 1e3 << ',' << s1.newton_iterations << ','
+        << s1.converged << '\n'
+        << "not_prestressed," << unstressed.first * 1e3 << ','
+        << unstressed.second * 1e3 << ',' << s2.newton_iterations << ','
+        << s2.converged << '\n'
+        << "increase_percent," << increase(prestressed.first, unstressed.first)
+        << ',' << increase(prestressed.second, unstressed.second) << ",,\n";
     });
     summary.set("prestressed_mean_displacement_mm", prestressed.first * 1e3);
     summary.set("prestressed_max_displacement_mm", prestressed.second * 1e3);
     summary.set("not_prestressed_mean_displacement_mm", unstressed.first * 1e3);
     summary.set("not_prestressed_max_displacement_mm", unstressed.second * 1e3);
     pcout << "  pre-stressed: mean " << prestressed.first * 1e3 << " mm, max "
-          << prestressed.second * 1e3 << " mm; not pre-stressed: mean " << unstressed.first * 1e3
-          << " mm, max " << unstressed.second * 1e3 << " mm (" << std::showpos
+          << prestressed.second * 1e3 << " mm; not pre-stressed: mean "
+          << unstressed.first * 1e3 << " mm, max " << unstressed.second * 1e3
+          << " mm (" << std::showpos
           << increase(prestressed.first, unstressed.first) << " % / "
-          << increase(prestressed.second, unstressed.second) << " %)" << std::noshowpos
-          << std::endl;
+          << increase(prestressed.second, unstressed.second) << " %)"
+          << std::noshowpos << std::endl;
   }
 
   void
@@ -338,22 +374,29 @@ namespace RestShape
     u -= forward->owned_copy(forward->rest_displacement());
     const auto [mean_u_m, max_u_m] = forward->nodal_norms(u);
     const double mean_u = mean_u_m * 1e3, max_u = max_u_m * 1e3;
-    const double n_nodes = Utilities::MPI::sum(double(forward->owned_nodes().size()), comm);
+    const double n_nodes =
+      Utilities::MPI::sum(double(forward->owned_nodes().size()), comm);
 
-    const Tensor<1, 3> external = forward->total_external_force(forward->load());
+    const Tensor<1, 3> external =
+      forward->total_external_force(forward->load());
     const Tensor<1, 3> reaction = forward->support_reaction();
     const Tensor<1, 3> contact_force =
       contact ? contact->total_force(forward->raw_residual()) : Tensor<1, 3>();
     const Tensor<1, 3> support_force = forward->elastic_support_force();
 
     summary.set("converged", true);
-    summary.set("cell_type", std::string(mesh->is_simplex() ? "tetrahedra" : "hexahedra"));
+    summary.set("cell_type",
+                std::string(mesh->is_simplex() ? "tetrahedra" : "hexahedra"));
     summary.set("polynomial_degree", long(parameters.discretization.degree));
     summary.set("tangent",
-                std::string(parameters.discretization.tangent == TangentType::consistent ? "consistent" :
-                            parameters.discretization.tangent == TangentType::projected  ? "projected" :
-                            parameters.discretization.tangent == TangentType::adaptive   ? "adaptive" :
-                                                                                           "warped"));
+                std::string(
+                  parameters.discretization.tangent == TangentType::consistent ?
+                    "consistent" :
+                  parameters.discretization.tangent == TangentType::projected ?
+                    "projected" :
+                  parameters.discretization.tangent == TangentType::adaptive ?
+                    "adaptive" :
+                    "warped"));
     summary.set("n_cells", long(mesh->triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(n_nodes));
     summary.set("n_dofs", long(forward->dof_handler().n_dofs()));
@@ -361,7 +404,8 @@ namespace RestShape
     summary.set("load_steps", long(stats.load_steps));
     if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
       summary.set("linear_iterations_per_newton_step",
-                  double(stats.linear_iterations) / std::max(1u, stats.newton_iterations));
+                  double(stats.linear_iterations) /
+                    std::max(1u, stats.newton_iterations));
     if (!parameters.inverse.enabled)
       summary.set("relative_residual", stats.residual / stats.reference);
     summary.set("max_displacement_mm", max_u);
@@ -370,11 +414,12 @@ namespace RestShape
       {
         // Started from a rest shape: how far the equilibrium is from the
         // mesh (target) geometry.
-        const auto [mean_e, max_e] = forward->nodal_norms(forward->displacement());
+        const auto [mean_e, max_e] =
+          forward->nodal_norms(forward->displacement());
         summary.set("mean_error_mm", mean_e * 1e3);
         summary.set("max_error_mm", max_e * 1e3);
-        pcout << "  Equilibrium vs mesh geometry: mean " << mean_e * 1e3 << " mm, max "
-              << max_e * 1e3 << " mm" << std::endl;
+        pcout << "  Equilibrium vs mesh geometry: mean " << mean_e * 1e3
+              << " mm, max " << max_e * 1e3 << " mm" << std::endl;
       }
     summary.set("external_force_N", external);
     summary.set("support_reaction_N", reaction);
@@ -387,10 +432,13 @@ namespace RestShape
       {
         summary.set("active_contact_nodes", long(contact->n_active()));
         summary.set("contact_force_N", contact_force);
-        summary.set("active_set_iterations", long(stats.active_set_changes + 1));
-        summary.set("max_penetration_mm", contact->max_penetration(true) * 1e3 + 0.);
+        summary.set("active_set_iterations",
+                    long(stats.active_set_changes + 1));
+        summary.set("max_penetration_mm",
+                    contact->max_penetration(true) * 1e3 + 0.);
         summary.set("nodes_outside", long(contact->n_outside()));
-        const auto [p_min, p_max] = contact->pressure_range(forward->raw_residual());
+        const auto [p_min, p_max] =
+          contact->pressure_range(forward->raw_residual());
         summary.set("contact_pressure_min_Pa", p_min);
         summary.set("contact_pressure_max_Pa", p_max);
         summary.set("contact_patch_radius_mm",
@@ -402,42 +450,58 @@ namespace RestShape
       estimate = estimate_error(*forward, u);
     }
     summary.set("estimated_error_relative", estimate.relative);
-    pcout << "  Estimated error (Kelly, relative H1): " << estimate.relative << std::endl;
+    pcout << "  Estimated error (Kelly, relative H1): " << estimate.relative
+          << std::endl;
 
     convergence_table.add_value("cycle", cycle);
-    convergence_table.add_value("cells", mesh->triangulation().n_global_active_cells());
+    convergence_table.add_value("cells",
+                                mesh->triangulation().n_global_active_cells());
     convergence_table.add_value("dofs", forward->dof_handler().n_dofs());
     std::vector<double>      row    = {double(cycle),
-                               double(mesh->triangulation().n_global_active_cells()),
-                               double(forward->dof_handler().n_dofs()),
-                               estimate.relative,
-                               double(stats.newton_iterations),
-                               max_u};
-    std::vector<std::string> header = {"cycle", "n_cells", "n_dofs", "estimated_error",
-                                       "newton_iterations", "max_displacement_mm"};
+                                       double(
+                                 mesh->triangulation().n_global_active_cells()),
+                                       double(forward->dof_handler().n_dofs()),
+                                       estimate.relative,
+                                       double(stats.newton_iterations),
+                                       max_u};
+    std::vector<std::string> header = {"cycle",
+                                       "n_cells",
+                                       "n_dofs",
+                                       "estimated_error",
+                                       "newton_iterations",
+                                       "max_displacement_mm"};
     std::vector<std::string> rated;
-    const auto add_errors = [&](const ExactDisplacement &e, const VectorType &field,
-                                const std::string &prefix, const std::string &key) {
+    const auto               add_errors = [&](const ExactDisplacement &e,
+                                const VectorType        &field,
+                                const std::string       &prefix,
+                                const std::string       &key) {
       const DisplacementErrors errors = e.errors(*forward, field);
       convergence_table.add_value(prefix + "L2_rel", errors.l2_relative);
       convergence_table.add_value(prefix + "H1_rel", errors.h1_relative);
-      convergence_table.add_value(prefix + "max_nodal_mm", errors.max_nodal_error * 1e3);
+      convergence_table.add_value(prefix + "max_nodal_mm",
+                                  errors.max_nodal_error * 1e3);
       for (const std::string k : {"L2_rel", "H1_rel", "max_nodal_mm"})
         {
           convergence_table.set_scientific(prefix + k, true);
           convergence_table.set_precision(prefix + k, 3);
         }
       rated.insert(rated.end(), {prefix + "L2_rel", prefix + "H1_rel"});
-      row.insert(row.end(), {errors.l2_relative, errors.h1_relative, errors.max_nodal_error * 1e3});
-      header.insert(header.end(), {key + "l2_error_relative", key + "h1_error_relative",
-                                   key + "max_nodal_error_mm"});
+      row.insert(row.end(),
+                 {errors.l2_relative,
+                  errors.h1_relative,
+                  errors.max_nodal_error * 1e3});
+      header.insert(header.end(),
+                    {key + "l2_error_relative",
+                     key + "h1_error_relative",
+                     key + "max_nodal_error_mm"});
       summary.set(key + "l2_error_relative", errors.l2_relative);
       summary.set(key + "h1_error_relative", errors.h1_relative);
       summary.set(key + "max_nodal_error_mm", errors.max_nodal_error * 1e3);
-      pcout << "  Error of the " << (key.empty() ? "displacement" : "rest shape")
+      pcout << "  Error of the "
+            << (key.empty() ? "displacement" : "rest shape")
             << " against the exact one: L2 " << errors.l2_relative << ", H1 "
-            << errors.h1_relative << " (relative), max nodal " << errors.max_nodal_error * 1e3
-            << " mm" << std::endl;
+            << errors.h1_relative << " (relative), max nodal "
+            << errors.max_nodal_error * 1e3 << " mm" << std::endl;
     };
     if (exact)
       add_errors(*exact, u, "", "");
@@ -456,25 +520,29 @@ namespace RestShape
       {
         ConvergenceTable table = convergence_table;
         for (const std::string &key : rated)
-          table.evaluate_convergence_rates(key, ConvergenceTable::reduction_rate_log2);
-        output->write_text("convergence.txt", [&](std::ostream &out) { table.write_text(out); });
+          table.evaluate_convergence_rates(
+            key, ConvergenceTable::reduction_rate_log2);
+        output->write_text("convergence.txt",
+                           [&](std::ostream &out) { table.write_text(out); });
         if (cycle == parameters.refinement.cycles)
           table.write_text(pcout.get_stream());
       }
 
-    pcout << "  Displacement: max " << max_u << " mm, mean " << mean_u << " mm; force balance "
-          << (external + reaction + contact_force + support_force).norm() << " N of "
-          << external.norm() << " N" << std::endl;
+    pcout << "  Displacement: max " << max_u << " mm, mean " << mean_u
+          << " mm; force balance "
+          << (external + reaction + contact_force + support_force).norm()
+          << " N of " << external.norm() << " N" << std::endl;
     if (parameters.boundary.support_stiffness > 0)
-      pcout << "  Elastic support: force " << support_force << " N" << std::endl;
-    if (contact)
-      pcout << "  Contact: " << contact->n_active() << " active nodes, force " << contact_force
-            << " N, largest penetration " << contact->max_penetration(true) * 1e3 << " mm"
+      pcout << "  Elastic support: force " << support_force << " N"
             << std::endl;
+    if (contact)
+      pcout << "  Contact: " << contact->n_active() << " active nodes, force "
+            << contact_force << " N, largest penetration "
+            << contact->max_penetration(true) * 1e3 << " mm" << std::endl;
     if (parameters.output.write_nodal_csv)
       {
-        TimerOutput::Scope               scope(timer, "Output");
-        const VectorType                 w = forward->owned_copy(forward->rest_displacement());
+        TimerOutput::Scope scope(timer, "Output");
+        const VectorType w = forward->owned_copy(forward->rest_displacement());
         std::vector<std::vector<double>> rows;
         for (const Node &node : forward->owned_nodes())
           {
@@ -492,8 +560,15 @@ namespace RestShape
           all_rows.insert(all_rows.end(), part.begin(), part.end());
         const std::string unit = parameters.mesh.length_unit_name;
         output->write_csv("nodes.csv",
-                          {"x_" + unit, "y_" + unit, "z_" + unit, "u_x_mm", "u_y_mm", "u_z_mm",
-                           "rest_shift_x_mm", "rest_shift_y_mm", "rest_shift_z_mm"},
+                          {"x_" + unit,
+                           "y_" + unit,
+                           "z_" + unit,
+                           "u_x_mm",
+                           "u_y_mm",
+                           "u_z_mm",
+                           "rest_shift_x_mm",
+                           "rest_shift_y_mm",
+                           "rest_shift_z_mm"},
                           all_rows);
       }
     if (parameters.output.write_vtu)
@@ -503,19 +578,23 @@ namespace RestShape
         VectorType              contact_fields;
         if (contact)
           {
-            contact_fields = contact->nodal_fields(forward->raw_residual(), output->length_scale());
-            fields.push_back({&contact_fields,
-                              {"contact_active",
-                               "contact_gap_" + parameters.mesh.length_unit_name,
-                               "contact_pressure_Pa"},
-                              1.,
-                              ""});
+            contact_fields = contact->nodal_fields(forward->raw_residual(),
+                                                   output->length_scale());
+            fields.push_back(
+              {&contact_fields,
+               {"contact_active",
+                "contact_gap_" + parameters.mesh.length_unit_name,
+                "contact_pressure_Pa"},
+               1.,
+               ""});
           }
         // The inverse iteration wrote its series; its final state is also
         // the pre-stressed state a later simulation can start from.
-        const std::vector<CellField> cells = {{"estimated_error", estimate.indicators}};
+        const std::vector<CellField> cells = {
+          {"estimated_error", estimate.indicators}};
         if (parameters.inverse.enabled)
-          output->write_fields(*forward, 0, 0, fields, cells, "prestressed_state");
+          output->write_fields(
+            *forward, 0, 0, fields, cells, "prestressed_state");
         else
           output->write_fields(*forward, next_step++, cycle, fields, cells);
       }
@@ -531,6 +610,7 @@ namespace RestShape
         summary.set("newton_iterations", long(stats.newton_iterations));
       }
     summary.set("wall_seconds", wall_timer.wall_time());
-    output->write_text("summary.json", [&](std::ostream &out) { summary.write(out); });
+    output->write_text("summary.json",
+                       [&](std::ostream &out) { summary.write(out); });
   }
 } // namespace RestShape

@@ -50,7 +50,7 @@ namespace RestShape
     // deal.II's FunctionParser prints muparser's messages to std::cerr
     // before it throws; keep them off the terminal (we report one line).
     std::ostringstream silenced;
-    std::streambuf *   cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
     try
       {
         auto f = std::make_unique<SIFunction>(expressions, length_unit);
@@ -72,29 +72,36 @@ namespace RestShape
   }
 
   DisplacementErrors
-  ExactDisplacement::errors(const ForwardProblem &problem, const VectorType &field) const
+  ExactDisplacement::errors(const ForwardProblem &problem,
+                            const VectorType     &field) const
   {
     const auto &dof_handler = problem.dof_handler();
     const auto  comm = dof_handler.get_triangulation().get_communicator();
     VectorType  u_owned(problem.locally_owned_dofs(), comm);
     u_owned = field;
-    VectorType u(problem.locally_owned_dofs(), problem.locally_relevant_dofs(), comm);
+    VectorType u(problem.locally_owned_dofs(),
+                 problem.locally_relevant_dofs(),
+                 comm);
     u = u_owned;
 
-    const unsigned int degree = problem.fe().degree + 2;
+    const unsigned int  degree = problem.fe().degree + 2;
     const Quadrature<3> quadrature =
-      problem.mesh().is_simplex() ? Quadrature<3>(QGaussSimplex<3>(std::min(degree, 4u))) :
-                                    Quadrature<3>(QGauss<3>(degree));
+      problem.mesh().is_simplex() ?
+        Quadrature<3>(QGaussSimplex<3>(std::min(degree, 4u))) :
+        Quadrature<3>(QGauss<3>(degree));
     const auto &tria = dof_handler.get_triangulation();
 
-    const auto norm_of = [&](const VectorType &v, const Function<3> &f,
+    const auto norm_of = [&](const VectorType           &v,
+                             const Function<3>          &f,
                              const VectorTools::NormType norm) {
       Vector<float> cellwise(tria.n_active_cells());
-      VectorTools::integrate_difference(problem.mapping(), dof_handler, v, f,
-                                        cellwise, quadrature, norm);
+      VectorTools::integrate_difference(
+        problem.mapping(), dof_handler, v, f, cellwise, quadrature, norm);
       return VectorTools::compute_global_error(tria, cellwise, norm);
     };
-    VectorType zero(problem.locally_owned_dofs(), problem.locally_relevant_dofs(), comm);
+    VectorType                 zero(problem.locally_owned_dofs(),
+                    problem.locally_relevant_dofs(),
+                    comm);
     Functions::ZeroFunction<3> zero_function(3);
 
     DisplacementErrors e;
@@ -104,7 +111,7 @@ namespace RestShape
     // A translation has no gradient (up to the round-off of the function's
     // difference quotients): the H1 error is then absolute.
     const double l2_scale = l2_exact / GridTools::diameter(tria);
-    e.h1_relative = norm_of(u, *function, VectorTools::H1_seminorm) /
+    e.h1_relative         = norm_of(u, *function, VectorTools::H1_seminorm) /
                     (h1_exact > 1e-8 * l2_scale ? h1_exact : 1.0);
 
     for (const Node &node : problem.owned_nodes())

@@ -16,7 +16,7 @@ namespace RestShape
    * written.
    */
   void
-  write_file_atomically(const std::string &                        path,
+  write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write,
                         const std::string &parameter = "Output/Directory");
 
@@ -28,10 +28,11 @@ namespace RestShape
    * renamed to @p path.
    */
   void
-  write_named_file_atomically(const std::string &                              path,
-                              const std::function<bool(const std::string &)> &write,
-                              const std::string &                              parameter,
-                              const std::string &                              message);
+  write_named_file_atomically(
+    const std::string                              &path,
+    const std::function<bool(const std::string &)> &write,
+    const std::string                              &parameter,
+    const std::string                              &message);
 
   /**
    * Create @p directory (and parents) if needed and check that files can be

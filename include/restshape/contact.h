@@ -40,8 +40,8 @@ namespace RestShape
   {
   public:
     ContactProblem(const ContactParameters &parameters,
-                   const ForwardProblem &   forward,
-                   dealii::TimerOutput &    timer);
+                   const ForwardProblem    &forward,
+                   dealii::TimerOutput     &timer);
     ~ContactProblem();
 
     /// Find candidate nodes and their areas (after ForwardProblem::setup()).
@@ -85,7 +85,7 @@ namespace RestShape
 
     /// Add the constraints of the active nodes (not touching @p base's).
     void
-    add_constraints(dealii::AffineConstraints<double> &      constraints,
+    add_constraints(dealii::AffineConstraints<double>       &constraints,
                     const dealii::AffineConstraints<double> &base) const;
 
     /**
@@ -122,14 +122,16 @@ namespace RestShape
      * @p length_scale), z slot the contact pressure (Pa).
      */
     VectorType
-    nodal_fields(const VectorType &raw_residual, const double length_scale) const;
+    nodal_fields(const VectorType &raw_residual,
+                 const double      length_scale) const;
     /// Smallest and largest contact pressure over active nodes (Pa).
     std::pair<double, double>
     pressure_range(const VectorType &raw_residual) const;
     /// Largest distance of an active node from the axis through @p point
     /// along @p direction (m): the radius of the contact zone.
     double
-    contact_radius(const dealii::Point<3> &point, const dealii::Tensor<1, 3> &direction) const;
+    contact_radius(const dealii::Point<3>     &point,
+                   const dealii::Tensor<1, 3> &direction) const;
     /// contact_radius() about the axis through the centroid of the active
     /// nodes along @p direction (m; 0 without active nodes): the radius of
     /// a contact patch whose centre is not known in advance.
@@ -147,16 +149,16 @@ namespace RestShape
   private:
     struct Candidate
     {
-      Node                 node;
-      std::array<bool, 3>  fixed;
-      bool                 owned;
-      double               area_lumped = 0; // HRZ over all its boundary faces, m^2
-      bool                 eligible        = false;
-      bool                 active          = false;
-      bool                 pulled          = false; // released by thaw_if_adhesive()
-      bool                 normal_locked   = false; // crease node: normal fixed
-      unsigned int         normal_changes  = 0;     // face changes while frozen
-      double               gap             = 0;
+      Node                node;
+      std::array<bool, 3> fixed;
+      bool                owned;
+      double       area_lumped    = 0; // HRZ over all its boundary faces, m^2
+      bool         eligible       = false;
+      bool         active         = false;
+      bool         pulled         = false; // released by thaw_if_adhesive()
+      bool         normal_locked  = false; // crease node: normal fixed
+      unsigned int normal_changes = 0;     // face changes while frozen
+      double       gap            = 0;
       dealii::Tensor<1, 3> normal;
       dealii::Point<3>     previous_position;
     };
@@ -171,10 +173,10 @@ namespace RestShape
     std::vector<double>
     pressures(const VectorType &raw_residual) const;
 
-    const ContactParameters         parameters;
-    const ForwardProblem &          forward;
-    dealii::TimerOutput &           timer;
-    std::unique_ptr<Obstacle>       obstacle;
+    const ContactParameters   parameters;
+    const ForwardProblem     &forward;
+    dealii::TimerOutput      &timer;
+    std::unique_ptr<Obstacle> obstacle;
     /// A boundary face of a contact label: its candidate nodes with, for
     /// each, the HRZ-lumped area and int phi dA (m^2).
     struct Face
@@ -184,14 +186,14 @@ namespace RestShape
       dealii::Tensor<1, 3>      normal; // outward, mesh geometry
     };
 
-    std::vector<Candidate>          candidates;
-    std::vector<Face>               faces;
-    double                          c_scaled = 0;
-    std::set<std::size_t>           history;
-    double                          h_min = 0;
-    bool                            releases_frozen = false;
-    unsigned int                    n_updates = 0, n_thaws = 0;
-    unsigned int                    n_added = 0, n_released = 0;
+    std::vector<Candidate> candidates;
+    std::vector<Face>      faces;
+    double                 c_scaled = 0;
+    std::set<std::size_t>  history;
+    double                 h_min           = 0;
+    bool                   releases_frozen = false;
+    unsigned int           n_updates = 0, n_thaws = 0;
+    unsigned int           n_added = 0, n_released = 0;
   };
 } // namespace RestShape
 

@@ -68,11 +68,11 @@ namespace RestShape
       return parameters.solver.newton_tolerance;
     }
 
-    ForwardProblem(const Parameters &           parameters,
-                   LabelledMesh &               mesh,
-                   const MaterialTable &        materials,
-                   dealii::TimerOutput &        timer,
-                   dealii::ConditionalOStream & pcout);
+    ForwardProblem(const Parameters           &parameters,
+                   LabelledMesh               &mesh,
+                   const MaterialTable        &materials,
+                   dealii::TimerOutput        &timer,
+                   dealii::ConditionalOStream &pcout);
     ~ForwardProblem();
 
     /// Distribute DoFs, build constraints and the matrix; zero state.
@@ -125,7 +125,8 @@ namespace RestShape
      * finite element space (owned vector).
      */
     VectorType
-    interpolate_vertex_field(const std::vector<dealii::Tensor<1, 3>> &values) const;
+    interpolate_vertex_field(
+      const std::vector<dealii::Tensor<1, 3>> &values) const;
 
     /**
      * Check a rest displacement: false (with the number of bad cells) if
@@ -234,18 +235,18 @@ namespace RestShape
     void
     local_assemble(
       const typename dealii::DoFHandler<3>::active_cell_iterator &cell,
-      ScratchData &                                                scratch,
-      CopyData &                                                   copy,
-      const Assemble what) const;
+      ScratchData                                                &scratch,
+      CopyData                                                   &copy,
+      const Assemble                                              what) const;
 
     /// Newton for the current target load and rest shape.
     bool
     newton(SolveStatistics &stats);
 
-    const Parameters &          parameters;
-    LabelledMesh &              labelled_mesh;
-    const MaterialTable &       material_table;
-    dealii::TimerOutput &       timer;
+    const Parameters           &parameters;
+    LabelledMesh               &labelled_mesh;
+    const MaterialTable        &material_table;
+    dealii::TimerOutput        &timer;
     dealii::ConditionalOStream &pcout;
     const MPI_Comm              comm;
 
@@ -269,10 +270,10 @@ namespace RestShape
     double     total_energy = 0; // of the last assembly (J)
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
-    LoadState  current_load;
+    LoadState   current_load;
 
     std::unique_ptr<LinearSolver> linear_solver;
-    ContactProblem *              contact = nullptr;
+    ContactProblem               *contact = nullptr;
   };
 } // namespace RestShape
 

@@ -15,8 +15,8 @@ namespace RestShape
    * pole are scaled by (r / r_max)^((grading - 1)(1 - z / radius)), which
    * refines near the pole and leaves the flat top in place; the curved
    * boundary is projected back onto the sphere. A small contact zone at
-   * the pole is resolved this way. Cells with a face on the flat top get label 2, the others
-   * label 1. Units are those of @p radius.
+   * the pole is resolved this way. Cells with a face on the flat top get label
+   * 2, the others label 1. Units are those of @p radius.
    */
   void
   make_hemisphere(dealii::Triangulation<3> &tria,

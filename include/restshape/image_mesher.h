@@ -15,14 +15,15 @@ namespace RestShape
   /// Mesh_3 criteria, all lengths in mm.
   struct ImageMeshOptions
   {
-    double cell_size      = 10;  // largest tetrahedron circumradius
-    double facet_size     = 10;  // largest surface-triangle circumradius
-    double facet_distance = 1.5; // largest distance between facet and image boundary
-    double facet_angle    = 25;  // smallest surface-triangle angle (degrees)
-    double radius_edge    = 3;   // largest circumradius / shortest edge
-    double sliver_bound   = 12;  // dihedral angle (degrees) that perturbation
-                                 // and exudation try to exceed
-    unsigned int seed     = 0;   // CGAL's random seed: same input, same mesh
+    double cell_size  = 10; // largest tetrahedron circumradius
+    double facet_size = 10; // largest surface-triangle circumradius
+    double facet_distance =
+      1.5; // largest distance between facet and image boundary
+    double facet_angle  = 25; // smallest surface-triangle angle (degrees)
+    double radius_edge  = 3;  // largest circumradius / shortest edge
+    double sliver_bound = 12; // dihedral angle (degrees) that perturbation
+                              // and exudation try to exceed
+    unsigned int seed = 0;    // CGAL's random seed: same input, same mesh
   };
 
   /**
@@ -32,17 +33,18 @@ namespace RestShape
    * positively oriented even when the map mirrors).
    */
   MeshDescription
-  mesh_labelled_image(const LabelledImage &image, const ImageMeshOptions &options);
+  mesh_labelled_image(const LabelledImage    &image,
+                      const ImageMeshOptions &options);
 
   struct MeshQuality
   {
-    double       min_dihedral_deg    = 180;
-    double       max_dihedral_deg    = 0;
-    double       max_radius_edge     = 0;
-    double       mean_radius_edge    = 0;
-    unsigned int n_below_10_deg      = 0; // cells with a dihedral angle < 10 degrees
-    double       min_volume          = 0; // in the mesh's length unit cubed
-    double       total_volume        = 0;
+    double       min_dihedral_deg = 180;
+    double       max_dihedral_deg = 0;
+    double       max_radius_edge  = 0;
+    double       mean_radius_edge = 0;
+    unsigned int n_below_10_deg = 0; // cells with a dihedral angle < 10 degrees
+    double       min_volume     = 0; // in the mesh's length unit cubed
+    double       total_volume   = 0;
     std::map<unsigned int, double> volume_per_label;
   };
 
@@ -66,7 +68,7 @@ namespace RestShape
                           const double         closing,
                           const double         facet_size,
                           const double         facet_distance,
-                          const std::string &  file);
+                          const std::string   &file);
 } // namespace RestShape
 
 #endif

@@ -21,8 +21,8 @@ namespace RestShape
   struct InverseIterationRecord
   {
     unsigned int iteration;
-    double       mean_error;  // m
-    double       max_error;   // m
+    double       mean_error; // m
+    double       max_error;  // m
     unsigned int newton_iterations;
     unsigned int active_contact_nodes;
     double       wall_seconds;
@@ -32,12 +32,13 @@ namespace RestShape
   struct InverseResult
   {
     bool         converged = false;
-    std::string  reason; // why it stopped unconverged
+    std::string  reason;                // why it stopped unconverged
     unsigned int iterations        = 0; // accepted rest-shape updates
     unsigned int forward_solves    = 0; // including rejected ones
     unsigned int newton_iterations = 0; // all forward solves
-    unsigned int rejected_steps    = 0; // rejected Anderson and shortened plain steps
-    double       mean_error = 0, max_error = 0; // m
+    unsigned int rejected_steps =
+      0; // rejected Anderson and shortened plain steps
+    double mean_error = 0, max_error = 0; // m
   };
 
   /**
@@ -61,13 +62,13 @@ namespace RestShape
   class InverseProblem
   {
   public:
-    InverseProblem(const InverseParameters &parameters,
-                   ForwardProblem &         forward,
-                   ContactProblem *         contact,
-                   OutputWriter *           output,
-                   dealii::TimerOutput &    timer,
+    InverseProblem(const InverseParameters    &parameters,
+                   ForwardProblem             &forward,
+                   ContactProblem             *contact,
+                   OutputWriter               *output,
+                   dealii::TimerOutput        &timer,
                    dealii::ConditionalOStream &pcout,
-                   const dealii::Timer &    wall_timer);
+                   const dealii::Timer        &wall_timer);
 
     /**
      * Run from the rest displacement @p initial_rest (owned; zero: the
@@ -85,17 +86,19 @@ namespace RestShape
     double
     measure(const std::pair<double, double> &errors) const;
     void
-    record(const unsigned int iteration, const SolveStatistics &stats, const bool anderson);
+    record(const unsigned int     iteration,
+           const SolveStatistics &stats,
+           const bool             anderson);
     void
     write_output(const unsigned int step, const unsigned int iteration);
 
-    const InverseParameters      parameters;
-    ForwardProblem &             forward;
-    ContactProblem *             contact;
-    OutputWriter *               output;
-    dealii::TimerOutput &        timer;
-    dealii::ConditionalOStream & pcout;
-    const dealii::Timer &        wall_timer;
+    const InverseParameters             parameters;
+    ForwardProblem                     &forward;
+    ContactProblem                     *contact;
+    OutputWriter                       *output;
+    dealii::TimerOutput                &timer;
+    dealii::ConditionalOStream         &pcout;
+    const dealii::Timer                &wall_timer;
     std::vector<InverseIterationRecord> history;
   };
 } // namespace RestShape

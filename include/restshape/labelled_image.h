@@ -28,7 +28,9 @@ namespace RestShape
     std::vector<std::uint8_t> labels;
 
     std::size_t
-    index(const unsigned int i, const unsigned int j, const unsigned int k) const
+    index(const unsigned int i,
+          const unsigned int j,
+          const unsigned int k) const
     {
       return i + std::size_t(size[0]) * (j + std::size_t(size[1]) * k);
     }
@@ -60,8 +62,8 @@ namespace RestShape
   /// Written under a temporary name and renamed into place.
   void
   write_labelled_image(const LabelledImage &image,
-                       const std::string &  file,
-                       const std::string &  parameter);
+                       const std::string   &file,
+                       const std::string   &parameter);
 } // namespace RestShape
 
 #endif

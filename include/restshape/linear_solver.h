@@ -53,7 +53,7 @@ namespace RestShape
     /// symbolic factorisation (METIS ordering) is done once per mesh.
     std::unique_ptr<Epetra_LinearProblem> direct_problem;
     std::unique_ptr<Amesos_BaseSolver>    direct_solver;
-    const void *                          factored_matrix = nullptr;
+    const void                           *factored_matrix = nullptr;
 
     const SolverParameters           parameters;
     const unsigned int               degree;

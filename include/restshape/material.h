@@ -51,11 +51,11 @@ namespace RestShape
      * with R held fixed (SOFA's R K0 R^T). Returns false if det F <= 0.
      */
     bool
-    evaluate(const Tensor2 &     F,
-             Tensor2 &           P,
-             Tensor4 *           tangent,
-             const TangentType   type,
-             double *            energy = nullptr) const;
+    evaluate(const Tensor2    &F,
+             Tensor2          &P,
+             Tensor4          *tangent,
+             const TangentType type,
+             double           *energy = nullptr) const;
 
     double
     energy_density(const Tensor2 &F) const;
@@ -69,7 +69,7 @@ namespace RestShape
     project_twist_modes(const Tensor2 &R,
                         const Tensor2 &S,
                         const double   tr_E,
-                        Tensor4 &      A) const;
+                        Tensor4       &A) const;
 
     double mu     = 0;
     double lambda = 0;

@@ -63,16 +63,16 @@ namespace RestShape
    * @p length_unit. Written atomically.
    */
   void
-  write_gmsh(const dealii::Triangulation<3> &                   tria,
+  write_gmsh(const dealii::Triangulation<3>                      &tria,
              const std::function<dealii::Point<3>(unsigned int)> &position,
              const double                                         length_unit,
-             const std::string &                                  file);
+             const std::string                                   &file);
 
   /// The same for a mesh description (vertices in metres).
   void
   write_gmsh(const MeshDescription &mesh,
              const double           length_unit,
-             const std::string &    file);
+             const std::string     &file);
 
   /**
    * The computational mesh of a scene: the triangulation (distributed when
@@ -143,10 +143,10 @@ namespace RestShape
     void
     create_triangulation();
 
-    MeshDescription                          description; // tetrahedra only
+    MeshDescription                           description; // tetrahedra only
     std::unique_ptr<dealii::Triangulation<3>> tria;
-    std::map<Label, unsigned int>            counts;
-    double                                   bounding_diameter;
+    std::map<Label, unsigned int>             counts;
+    double                                    bounding_diameter;
   };
 } // namespace RestShape
 

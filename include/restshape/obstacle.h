@@ -13,10 +13,12 @@ namespace RestShape
   /// The signed distance of a point to the obstacle, on the allowed side.
   struct Gap
   {
-    double               gap;    // > 0 on the allowed side, < 0 beyond (m)
-    dealii::Tensor<1, 3> normal;   // smoothed (Phong) normal, towards the allowed side
-    dealii::Tensor<1, 3> gradient; // exact gradient of the gap (closest face's normal
-                                   // on the surface), towards the allowed side
+    double gap; // > 0 on the allowed side, < 0 beyond (m)
+    dealii::Tensor<1, 3>
+      normal; // smoothed (Phong) normal, towards the allowed side
+    dealii::Tensor<1, 3>
+      gradient; // exact gradient of the gap (closest face's normal
+                // on the surface), towards the allowed side
   };
 
   class Obstacle
@@ -29,7 +31,9 @@ namespace RestShape
      * region (a skull); otherwise the unbounded one (an obstacle). Throws
      * InputError naming the file and Contact/Obstacle file.
      */
-    Obstacle(const std::string &file, const double length_unit, const bool inside);
+    Obstacle(const std::string &file,
+             const double       length_unit,
+             const bool         inside);
     ~Obstacle();
 
     Gap

@@ -19,7 +19,8 @@ namespace RestShape
   class Summary
   {
   public:
-    using Value = std::variant<double, long, bool, std::string, dealii::Tensor<1, 3>>;
+    using Value =
+      std::variant<double, long, bool, std::string, dealii::Tensor<1, 3>>;
     void
     set(const std::string &key, const Value &value);
     void
@@ -33,10 +34,10 @@ namespace RestShape
   /// three scalar fields stored in the x, y, z slots of each node).
   struct NodalField
   {
-    const VectorType *       vector; // owned or ghosted
+    const VectorType        *vector; // owned or ghosted
     std::vector<std::string> names;  // one name: vector field; three: scalars
     double                   scale = 1;
-    std::string              magnitude_name = ""; // also write |vector| under this name
+    std::string magnitude_name     = ""; // also write |vector| under this name
   };
 
   struct CellField
@@ -62,12 +63,12 @@ namespace RestShape
      * NAME.vtu (or .pvtu) instead, outside the time series.
      */
     void
-    write_fields(const ForwardProblem &         problem,
+    write_fields(const ForwardProblem          &problem,
                  const unsigned int             step,
                  const double                   time,
                  const std::vector<NodalField> &extra_nodal = {},
-                 const std::vector<CellField> & extra_cell  = {},
-                 const std::string &            name        = "");
+                 const std::vector<CellField>  &extra_cell  = {},
+                 const std::string             &name        = "");
 
     /// 1 / (metres per output length unit).
     double
@@ -75,13 +76,13 @@ namespace RestShape
 
     /// Write text from rank 0 only, atomically, into the directory.
     void
-    write_text(const std::string &                        name,
+    write_text(const std::string                         &name,
                const std::function<void(std::ostream &)> &write) const;
 
     /// A CSV table (rank 0).
     void
-    write_csv(const std::string &                     name,
-              const std::vector<std::string> &        header,
+    write_csv(const std::string                      &name,
+              const std::vector<std::string>         &header,
               const std::vector<std::vector<double>> &rows) const;
 
     std::string
@@ -91,9 +92,9 @@ namespace RestShape
     std::string length_unit_name;
 
   private:
-    const std::string directory;
-    const double      length_unit;
-    const MPI_Comm    comm;
+    const std::string                                        directory;
+    const double                                             length_unit;
+    const MPI_Comm                                           comm;
     std::vector<std::pair<double, std::string>>              pvd_records;
     std::vector<std::pair<double, std::vector<std::string>>> visit_records;
   };

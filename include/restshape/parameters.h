@@ -44,7 +44,7 @@ namespace RestShape
   struct MeshParameters
   {
     std::string  file;
-    std::string  rest_shape_file; // optional: the rest shape (same mesh)
+    std::string  rest_shape_file;  // optional: the rest shape (same mesh)
     std::string  length_unit_name; // "mm" or "m"
     double       length_unit;      // metres per unit of the file
     CellType     cell_type;
@@ -69,9 +69,9 @@ namespace RestShape
 
   struct MaterialParameters
   {
-    LabelValues youngs_modulus;  // Pa
-    LabelValues poissons_ratio;  // -
-    LabelValues density;         // kg/m^3
+    LabelValues youngs_modulus; // Pa
+    LabelValues poissons_ratio; // -
+    LabelValues density;        // kg/m^3
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -82,8 +82,8 @@ namespace RestShape
   struct BoundaryParameters
   {
     std::vector<FixedLabel> fixed_labels;
-    double          support_stiffness = 0; // N/m^3: traction (Pa) per m of displacement
-    std::set<Label> support_labels;        // empty: all labels not fully fixed
+    double support_stiffness = 0; // N/m^3: traction (Pa) per m of displacement
+    std::set<Label> support_labels; // empty: all labels not fully fixed
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -93,10 +93,10 @@ namespace RestShape
 
   struct LoadParameters
   {
-    dealii::Tensor<1, 3> gravity;  // m/s^2
-    double               pressure; // Pa, positive pushes inward
-    double               fluid_density = 0; // kg/m^3 of an immersing fluid (buoyancy)
-    std::set<Label>      pressure_labels; // empty: all unfixed labels
+    dealii::Tensor<1, 3> gravity;    // m/s^2
+    double               pressure;   // Pa, positive pushes inward
+    double fluid_density = 0;        // kg/m^3 of an immersing fluid (buoyancy)
+    std::set<Label> pressure_labels; // empty: all unfixed labels
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -151,8 +151,8 @@ namespace RestShape
     };
     unsigned int cycles;
     Strategy     strategy;
-    double       refine_fraction  = 0.3;  // of the cells, largest indicators
-    double       coarsen_fraction = 0.0;  // of the cells, smallest indicators
+    double       refine_fraction  = 0.3; // of the cells, largest indicators
+    double       coarsen_fraction = 0.0; // of the cells, smallest indicators
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -221,17 +221,17 @@ namespace RestShape
   /// All subsections together: what a scene file describes.
   struct Parameters
   {
-    MeshParameters           mesh;
-    DiscretizationParameters discretization;
-    MaterialParameters       materials;
-    BoundaryParameters       boundary;
-    LoadParameters           loads;
-    SolverParameters         solver;
-    OutputParameters         output;
-    VerificationParameters   verification;
-    RefinementParameters     refinement;
-    ContactParameters        contact;
-    InverseParameters        inverse;
+    MeshParameters                mesh;
+    DiscretizationParameters      discretization;
+    MaterialParameters            materials;
+    BoundaryParameters            boundary;
+    LoadParameters                loads;
+    SolverParameters              solver;
+    OutputParameters              output;
+    VerificationParameters        verification;
+    RefinementParameters          refinement;
+    ContactParameters             contact;
+    InverseParameters             inverse;
     PrestressComparisonParameters prestress_comparison;
 
     static void

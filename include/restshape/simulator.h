@@ -31,9 +31,9 @@ namespace RestShape
      * @p prm holds the effective parameters (written to parameters.prm),
      * @p prm_file is the scene file (for messages).
      */
-    Simulator(const Parameters &              parameters,
+    Simulator(const Parameters               &parameters,
               const dealii::ParameterHandler &prm,
-              const std::string &             prm_file,
+              const std::string              &prm_file,
               const MPI_Comm                  comm);
 
     /**
@@ -66,7 +66,7 @@ namespace RestShape
     void
     write_summary(const SolveStatistics &stats);
 
-    const Parameters &              parameters;
+    const Parameters               &parameters;
     const dealii::ParameterHandler &prm;
     const std::string               prm_file;
     const MPI_Comm                  comm;

@@ -15,9 +15,10 @@ namespace RestShape
 {
   struct DisplacementErrors
   {
-    double l2_relative      = 0; // |u - u_ex|_L2 / |u_ex|_L2
-    double h1_relative      = 0; // |grad(u - u_ex)|_L2 / |grad u_ex|_L2 (absolute if grad u_ex = 0)
-    double max_nodal_error  = 0; // max over nodes of |u - u_ex| (m)
+    double l2_relative = 0; // |u - u_ex|_L2 / |u_ex|_L2
+    double h1_relative =
+      0; // |grad(u - u_ex)|_L2 / |grad u_ex|_L2 (absolute if grad u_ex = 0)
+    double max_nodal_error = 0; // max over nodes of |u - u_ex| (m)
   };
 
   class ExactDisplacement
@@ -28,9 +29,10 @@ namespace RestShape
      * (metres per unit) as functions of x, y, z in the same unit. Throws
      * InputError naming Verification/Exact displacement.
      */
-    ExactDisplacement(const std::string &expressions,
-                      const double       length_unit,
-                      const std::string &parameter = "Verification/Exact displacement");
+    ExactDisplacement(
+      const std::string &expressions,
+      const double       length_unit,
+      const std::string &parameter = "Verification/Exact displacement");
 
     /// Errors of the field @p u (owned or ghosted, in the DoF layout of
     /// @p problem), e.g. the displacement d - w or the rest displacement w.

@@ -29,15 +29,16 @@ using namespace RestShape;
 
 namespace
 {
-  constexpr std::uint8_t cerebrum = 1, tumour = 2, cerebellum = 3, brainstem = 4,
-                         unknown = 255;
+  constexpr std::uint8_t cerebrum = 1, tumour = 2, cerebellum = 3,
+                         brainstem = 4, unknown = 255;
 
   /// 6-neighbours of voxel v of @p image (those inside the grid).
   template <typename F>
   void
   for_neighbours(const LabelledImage &image, const std::size_t v, const F &f)
   {
-    const std::size_t nx = image.size[0], ny = image.size[1], nz = image.size[2];
+    const std::size_t nx = image.size[0], ny = image.size[1],
+                      nz = image.size[2];
     const std::size_t i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
     if (i > 0)
       f(v - 1);
@@ -140,14 +141,20 @@ main(int argc, char **argv)
             throw InputError("", arg, "unknown option");
         }
       if (brain_file.empty() || atlas_file.empty() || out.empty())
-        throw InputError("", "--brain", "usage: restshape-brain-labels --brain ch2bet.nii.gz "
-                                        "--atlas aal.nii.gz --out LABELS.nii.gz");
+        throw InputError("",
+                         "--brain",
+                         "usage: restshape-brain-labels --brain ch2bet.nii.gz "
+                         "--atlas aal.nii.gz --out LABELS.nii.gz");
 
       const LabelledImage brain = read_labelled_image(brain_file, "--brain");
       const LabelledImage atlas = read_labelled_image(atlas_file, "--atlas");
-      if (brain.size != atlas.size || (brain.index_to_mm - atlas.index_to_mm).norm() > 1e-6 ||
+      if (brain.size != atlas.size ||
+          (brain.index_to_mm - atlas.index_to_mm).norm() > 1e-6 ||
           (brain.offset - atlas.offset).norm() > 1e-6)
-        throw InputError(atlas_file, "--atlas", "not on the grid of --brain; expected both on the same voxel grid");
+        throw InputError(
+          atlas_file,
+          "--atlas",
+          "not on the grid of --brain; expected both on the same voxel grid");
 
       const std::size_t n = brain.labels.size();
       // The brain: largest component of the mask, cavities filled.
@@ -156,7 +163,8 @@ main(int argc, char **argv)
         in[v] = brain.labels[v] != 0;
       {
         const auto [component, sizes] = components(brain, in);
-        const int largest = std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+        const int largest =
+          std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
         for (std::size_t v = 0; v < n; ++v)
           in[v] = component[v] == largest;
       }
@@ -171,25 +179,27 @@ main(int argc, char **argv)
             in[v] = true;
       }
 
-      LabelledImage labels = brain;
+      LabelledImage labels          = brain;
       unsigned int  lowest_cerebral = brain.size[2];
       for (std::size_t v = 0; v < n; ++v)
         if (in[v] && atlas.labels[v] >= 1 && atlas.labels[v] <= 90)
-          lowest_cerebral = std::min<unsigned int>(lowest_cerebral, v / (std::size_t(brain.size[0]) * brain.size[1]));
+          lowest_cerebral = std::min<unsigned int>(
+            lowest_cerebral, v / (std::size_t(brain.size[0]) * brain.size[1]));
       for (unsigned int k = 0; k < brain.size[2]; ++k)
         for (unsigned int j = 0; j < brain.size[1]; ++j)
           for (unsigned int i = 0; i < brain.size[0]; ++i)
             {
               const std::size_t  v = brain.index(i, j, k);
               const std::uint8_t a = atlas.labels[v];
-              std::uint8_t &     l = labels.labels[v];
+              std::uint8_t      &l = labels.labels[v];
               if (!in[v])
                 l = 0;
               else if (a >= 91 && a <= 116)
                 l = cerebellum;
               else if (a >= 1 && a <= 90)
                 l = cerebrum;
-              else if (k < lowest_cerebral && std::abs(brain.position(i, j, k)[0]) < half_width)
+              else if (k < lowest_cerebral &&
+                       std::abs(brain.position(i, j, k)[0]) < half_width)
                 l = brainstem;
               else
                 l = unknown;
@@ -201,7 +211,9 @@ main(int argc, char **argv)
             {
               const std::size_t v = brain.index(i, j, k);
               const auto        x = brain.position(i, j, k);
-              if (in[v] && x.distance(dealii::Point<3>(centre[0], centre[1], centre[2])) <= radius)
+              if (in[v] && x.distance(dealii::Point<3>(centre[0],
+                                                       centre[1],
+                                                       centre[2])) <= radius)
                 labels.labels[v] = tumour;
             }
 
@@ -213,8 +225,12 @@ main(int argc, char **argv)
             mine[v] = labels.labels[v] == label;
           const auto [component, sizes] = components(labels, mine);
           if (sizes.empty())
-            throw InputError(out, "--tumour", "label " + std::to_string(label) + " is empty; check the inputs");
-          const int largest = std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+            throw InputError(out,
+                             "--tumour",
+                             "label " + std::to_string(label) +
+                               " is empty; check the inputs");
+          const int largest =
+            std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
           for (std::size_t v = 0; v < n; ++v)
             if (mine[v] && component[v] != largest)
               labels.labels[v] = unknown;
@@ -222,14 +238,17 @@ main(int argc, char **argv)
       fill_unknown(labels);
 
       write_labelled_image(labels, out, "--out");
-      std::cout << out << ": cerebrum 1, tumour 2, cerebellum 3, brainstem 4 (voxels:";
+      std::cout << out
+                << ": cerebrum 1, tumour 2, cerebellum 3, brainstem 4 (voxels:";
       for (const auto &[label, count] : labels.label_counts())
         std::cout << " " << label << ":" << count;
-      std::cout << "), brainstem below voxel row z = " << lowest_cerebral << std::endl;
+      std::cout << "), brainstem below voxel row z = " << lowest_cerebral
+                << std::endl;
     }
   catch (const std::exception &exc)
     {
-      std::cerr << "restshape-brain-labels: error: " << one_line_message(exc) << std::endl;
+      std::cerr << "restshape-brain-labels: error: " << one_line_message(exc)
+                << std::endl;
       return 1;
     }
   return 0;

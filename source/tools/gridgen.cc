@@ -21,8 +21,8 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <restshape/generated_meshes.h>
 #include <restshape/command_line.h>
+#include <restshape/generated_meshes.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
 
@@ -52,7 +52,7 @@ main(int argc, char **argv)
     {
       std::array<double, 3>       size{{1, 1, 1}}, origin{{0, 0, 0}};
       std::array<unsigned int, 3> n{{1, 1, 1}};
-      bool                        tets  = true, tets24 = false;
+      bool                        tets = true, tets24 = false;
       Label                       label = 1;
       std::vector<Slab>           slabs;
       std::string                 out;
@@ -75,20 +75,26 @@ main(int argc, char **argv)
                 n[d] = static_cast<unsigned int>(t[d]);
             }
           else if (arg == "--cell-type")
-          {
-            tets   = (value == "tetrahedra");
-            tets24 = (value == "tetrahedra24");
-            if (!tets && !tets24 && value != "hexahedra")
-              throw InputError("", arg, "expected tetrahedra, tetrahedra24 or hexahedra");
-          }
+            {
+              tets   = (value == "tetrahedra");
+              tets24 = (value == "tetrahedra24");
+              if (!tets && !tets24 && value != "hexahedra")
+                throw InputError(
+                  "", arg, "expected tetrahedra, tetrahedra24 or hexahedra");
+            }
           else if (arg == "--label")
             label = std::stoi(value);
           else if (arg == "--slab")
             {
               const auto f = Utilities::split_string_list(value, ':');
-              if (f.size() != 4 || f[0].size() != 1 || f[0][0] < 'x' || f[0][0] > 'z')
-                throw InputError("", arg, "expected AXIS:MIN:MAX:LABEL, e.g. z:0:5:2");
-              slabs.push_back({unsigned(f[0][0] - 'x'), std::stod(f[1]), std::stod(f[2]),
+              if (f.size() != 4 || f[0].size() != 1 || f[0][0] < 'x' ||
+                  f[0][0] > 'z')
+                throw InputError("",
+                                 arg,
+                                 "expected AXIS:MIN:MAX:LABEL, e.g. z:0:5:2");
+              slabs.push_back({unsigned(f[0][0] - 'x'),
+                               std::stod(f[1]),
+                               std::stod(f[2]),
                                Label(std::stoi(f[3]))});
             }
           else if (arg == "--out")
@@ -114,16 +120,21 @@ main(int argc, char **argv)
             GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
           else
             tria.copy_triangulation(hexes);
-          write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
+          write_gmsh(
+            tria,
+            [&](unsigned int v) { return tria.get_vertices()[v]; },
+            1.0,
+            out);
           std::cout << out << ": " << tria.n_active_cells() << " cells, "
                     << tria.n_used_vertices() << " vertices" << std::endl;
           return 0;
         }
 
       MeshDescription mesh;
-      const auto      vertex_index = [&](unsigned int i, unsigned int j, unsigned int k) {
-        return (k * (n[1] + 1) + j) * (n[0] + 1) + i;
-      };
+      const auto      vertex_index =
+        [&](unsigned int i, unsigned int j, unsigned int k) {
+          return (k * (n[1] + 1) + j) * (n[0] + 1) + i;
+        };
       for (unsigned int k = 0; k <= n[2]; ++k)
         for (unsigned int j = 0; j <= n[1]; ++j)
           for (unsigned int i = 0; i <= n[0]; ++i)
@@ -137,7 +148,9 @@ main(int argc, char **argv)
               // Hexahedron vertices in deal.II's lexicographic order.
               std::array<unsigned int, 8> hex;
               for (unsigned int v = 0; v < 8; ++v)
-                hex[v] = vertex_index(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
+                hex[v] = vertex_index(i + (v & 1),
+                                      j + ((v >> 1) & 1),
+                                      k + ((v >> 2) & 1));
               Point<3> centre;
               for (const unsigned int v : hex)
                 centre += mesh.vertices[v] / 8.;
@@ -178,19 +191,25 @@ main(int argc, char **argv)
               while (std::next_permutation(axes.begin(), axes.end()));
             }
 
-      std::size_t n_cells = mesh.cells.size(), n_vertices = mesh.vertices.size();
+      std::size_t n_cells    = mesh.cells.size(),
+                  n_vertices = mesh.vertices.size();
       if (tets24)
         {
           Triangulation<3> hexes, tria;
           hexes.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
           GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
-          write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
+          write_gmsh(
+            tria,
+            [&](unsigned int v) { return tria.get_vertices()[v]; },
+            1.0,
+            out);
           n_cells    = tria.n_active_cells();
           n_vertices = tria.n_used_vertices();
         }
       else
         write_gmsh(mesh, 1.0, out);
-      std::cout << out << ": " << n_cells << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
+      std::cout << out << ": " << n_cells
+                << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
                 << n_vertices << " vertices" << std::endl;
     }
   catch (const std::exception &exc)

@@ -69,7 +69,10 @@ main(int argc, char **argv)
         {
           const std::string arg = argv[i];
           if (i + 1 >= argc)
-            throw InputError("", arg, "missing value (see the comment of source/tools/mesh.cc)");
+            throw InputError(
+              "",
+              arg,
+              "missing value (see the comment of source/tools/mesh.cc)");
           const std::string value = argv[++i];
           if (arg == "--image")
             image_file = value;
@@ -89,7 +92,8 @@ main(int argc, char **argv)
           else if (arg == "--sliver-bound")
             options.sliver_bound = parse_positive(arg, value);
           else if (arg == "--seed")
-            options.seed = static_cast<unsigned int>(parse_positive(arg, value));
+            options.seed =
+              static_cast<unsigned int>(parse_positive(arg, value));
           else if (arg == "--skull-gap")
             skull_gap = parse_positive(arg, value);
           else if (arg == "--skull-closing")
@@ -97,20 +101,29 @@ main(int argc, char **argv)
           else if (arg == "--skull-facet-size")
             skull_facet_size = parse_positive(arg, value);
           else
-            throw InputError("",
-                             arg,
-                             "unknown option; expected --image, --out, --cell-size, "
-                             "--facet-size, --facet-distance, --sliver-bound, --seed, "
-                             "--skull-out, --skull-gap, --skull-closing or --skull-facet-size");
+            throw InputError(
+              "",
+              arg,
+              "unknown option; expected --image, --out, --cell-size, "
+              "--facet-size, --facet-distance, --sliver-bound, --seed, "
+              "--skull-out, --skull-gap, --skull-closing or --skull-facet-size");
         }
       if (image_file.empty())
-        throw InputError("", "--image", "no image given; expected a labelled NIfTI image");
+        throw InputError("",
+                         "--image",
+                         "no image given; expected a labelled NIfTI image");
       if (out.empty())
-        throw InputError("", "--out", "no output mesh given; expected a .msh file name");
+        throw InputError("",
+                         "--out",
+                         "no output mesh given; expected a .msh file name");
       if (!skull_out.empty() && skull_gap == 0)
-        throw InputError("", "--skull-gap", "--skull-out needs the CSF gap in mm");
+        throw InputError("",
+                         "--skull-gap",
+                         "--skull-out needs the CSF gap in mm");
       if (skull_out.empty() && skull_gap > 0)
-        throw InputError("", "--skull-out", "--skull-gap given without an output surface");
+        throw InputError("",
+                         "--skull-out",
+                         "--skull-gap given without an output surface");
       if (!facet_size_given)
         options.facet_size = options.cell_size;
       if (skull_facet_size == 0)
@@ -118,51 +131,62 @@ main(int argc, char **argv)
       // Fail on an unwritable destination before the meshing work.
       for (const std::string &file : {out, skull_out})
         if (!file.empty())
-          ensure_writable_directory(std::filesystem::path(file).parent_path().empty() ?
-                                      "." :
-                                      std::filesystem::path(file).parent_path().string(),
-                                    file == out ? "--out" : "--skull-out");
+          ensure_writable_directory(
+            std::filesystem::path(file).parent_path().empty() ?
+              "." :
+              std::filesystem::path(file).parent_path().string(),
+            file == out ? "--out" : "--skull-out");
 
       const LabelledImage image = read_labelled_image(image_file, "--image");
       const auto          h     = image.spacing();
-      std::cout << std::setprecision(4) << "image " << image_file << ": " << image.size[0]
-                << "x" << image.size[1] << "x" << image.size[2] << " voxels of " << h[0]
-                << "x" << h[1] << "x" << h[2] << " mm; labels";
+      std::cout << std::setprecision(4) << "image " << image_file << ": "
+                << image.size[0] << "x" << image.size[1] << "x" << image.size[2]
+                << " voxels of " << h[0] << "x" << h[1] << "x" << h[2]
+                << " mm; labels";
       for (const auto &[label, count] : image.label_counts())
-        std::cout << " " << label << " (" << count * h[0] * h[1] * h[2] / 1000 << " cm^3)";
+        std::cout << " " << label << " (" << count * h[0] * h[1] * h[2] / 1000
+                  << " cm^3)";
       std::cout << std::endl;
 
       dealii::Timer         timer;
       const MeshDescription mesh = mesh_labelled_image(image, options);
       if (mesh.cells.empty())
-        throw InputError(image_file,
-                         "--cell-size",
-                         "the mesh is empty: the sizes are too large for the labelled "
-                         "region; expected sizes well below its extent");
-      std::cout << "Mesh_3 (cell size " << options.cell_size << " mm, facet size "
-                << options.facet_size << " mm, facet distance " << options.facet_distance
-                << " mm): " << mesh.vertices.size() << " nodes, " << mesh.cells.size()
-                << " tetrahedra in " << timer.wall_time() << " s" << std::endl;
+        throw InputError(
+          image_file,
+          "--cell-size",
+          "the mesh is empty: the sizes are too large for the labelled "
+          "region; expected sizes well below its extent");
+      std::cout << "Mesh_3 (cell size " << options.cell_size
+                << " mm, facet size " << options.facet_size
+                << " mm, facet distance " << options.facet_distance
+                << " mm): " << mesh.vertices.size() << " nodes, "
+                << mesh.cells.size() << " tetrahedra in " << timer.wall_time()
+                << " s" << std::endl;
 
-      const MeshQuality                   q = mesh_quality(mesh);
+      const MeshQuality                    q = mesh_quality(mesh);
       std::map<unsigned int, unsigned int> n_per_label;
       for (const auto &cell : mesh.cells)
         ++n_per_label[cell.material_id];
       for (const auto &[label, count] : image.label_counts())
         {
           const auto volume = q.volume_per_label.find(label);
-          std::cout << "  label " << label << ": " << n_per_label[label] << " tetrahedra, "
-                    << (volume == q.volume_per_label.end() ? 0. : volume->second / 1000)
-                    << " cm^3 (image " << count * h[0] * h[1] * h[2] / 1000 << " cm^3)"
-                    << std::endl;
+          std::cout << "  label " << label << ": " << n_per_label[label]
+                    << " tetrahedra, "
+                    << (volume == q.volume_per_label.end() ?
+                          0. :
+                          volume->second / 1000)
+                    << " cm^3 (image " << count * h[0] * h[1] * h[2] / 1000
+                    << " cm^3)" << std::endl;
           if (n_per_label[label] == 0)
             std::cout << "  warning: label " << label
-                      << " has no tetrahedron; reduce --cell-size to resolve it" << std::endl;
+                      << " has no tetrahedron; reduce --cell-size to resolve it"
+                      << std::endl;
         }
       std::cout << "quality: dihedral angles " << q.min_dihedral_deg << " to "
                 << q.max_dihedral_deg << " deg (" << q.n_below_10_deg
-                << " cells below 10 deg), radius-edge ratio mean " << q.mean_radius_edge
-                << ", max " << q.max_radius_edge << std::endl;
+                << " cells below 10 deg), radius-edge ratio mean "
+                << q.mean_radius_edge << ", max " << q.max_radius_edge
+                << std::endl;
 
       MeshDescription in_metres = mesh;
       for (auto &p : in_metres.vertices)
@@ -174,9 +198,14 @@ main(int argc, char **argv)
       if (!skull_out.empty())
         {
           timer.restart();
-          const unsigned int n_triangles = write_enclosing_surface(
-            image, skull_gap, skull_closing, skull_facet_size, std::min(options.facet_distance, skull_gap / 2),
-            skull_out);
+          const unsigned int n_triangles =
+            write_enclosing_surface(image,
+                                    skull_gap,
+                                    skull_closing,
+                                    skull_facet_size,
+                                    std::min(options.facet_distance,
+                                             skull_gap / 2),
+                                    skull_out);
           const Obstacle skull(skull_out, 1e-3, true);
           double         min_gap = 1e9, max_gap = 0, sum = 0;
           const auto     nodes = boundary_nodes(mesh);
@@ -187,22 +216,25 @@ main(int argc, char **argv)
               max_gap          = std::max(max_gap, gap);
               sum += gap;
             }
-          std::cout << "skull " << skull_out << ": " << n_triangles << " triangles, gap "
-                    << skull_gap << " mm, in " << timer.wall_time()
-                    << " s; distance from the mesh's surface nodes to it: min " << min_gap
-                    << ", mean " << sum / nodes.size() << ", max " << max_gap << " mm"
-                    << std::endl;
+          std::cout << "skull " << skull_out << ": " << n_triangles
+                    << " triangles, gap " << skull_gap << " mm, in "
+                    << timer.wall_time()
+                    << " s; distance from the mesh's surface nodes to it: min "
+                    << min_gap << ", mean " << sum / nodes.size() << ", max "
+                    << max_gap << " mm" << std::endl;
           if (min_gap <= 0)
-            throw InputError(skull_out,
-                             "--skull-gap",
-                             "a surface node of the mesh lies outside the skull (gap " +
-                               number_text(min_gap) +
-                               " mm); expected a gap larger than --facet-distance");
+            throw InputError(
+              skull_out,
+              "--skull-gap",
+              "a surface node of the mesh lies outside the skull (gap " +
+                number_text(min_gap) +
+                " mm); expected a gap larger than --facet-distance");
         }
     }
   catch (const std::exception &exc)
     {
-      std::cerr << "restshape-mesh: error: " << one_line_message(exc) << std::endl;
+      std::cerr << "restshape-mesh: error: " << one_line_message(exc)
+                << std::endl;
       return 1;
     }
   return 0;

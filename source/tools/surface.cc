@@ -8,7 +8,6 @@
 // FILE: .off, .stl or .obj. --flip reverses every face (an inward-oriented
 // surface), --open deletes one face (a surface with a hole): both make
 // invalid obstacles, for the error tests.
-#include <restshape/command_line.h>
 #include <deal.II/base/utilities.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -18,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/generators.h>
+#include <restshape/command_line.h>
 
 #include <array>
 #include <iostream>
@@ -40,7 +40,7 @@ main(int argc, char **argv)
     {
       std::string           shape, out;
       std::array<double, 3> a{{0, 0, 0}}, size{{1, 1, 1}};
-      double                radius = 1;
+      double                radius       = 1;
       unsigned int          subdivisions = 3;
       bool                  flip = false, open = false;
       for (int i = 1; i < argc; ++i)
@@ -69,17 +69,24 @@ main(int argc, char **argv)
             throw std::runtime_error("unknown option " + arg);
         }
       if (shape.empty() || out.empty())
-        throw std::runtime_error("usage: restshape-surface --box X,Y,Z --size LX,LY,LZ | "
-                                 "--sphere X,Y,Z --radius R [--subdivisions N] --out FILE");
+        throw std::runtime_error(
+          "usage: restshape-surface --box X,Y,Z --size LX,LY,LZ | "
+          "--sphere X,Y,Z --radius R [--subdivisions N] --out FILE");
 
       Mesh mesh;
       if (shape == "box")
         {
           const double x0 = a[0], y0 = a[1], z0 = a[2];
           const double x1 = x0 + size[0], y1 = y0 + size[1], z1 = z0 + size[2];
-          CGAL::make_hexahedron(Point(x0, y0, z0), Point(x1, y0, z0), Point(x1, y1, z0),
-                                Point(x0, y1, z0), Point(x0, y1, z1), Point(x0, y0, z1),
-                                Point(x1, y0, z1), Point(x1, y1, z1), mesh);
+          CGAL::make_hexahedron(Point(x0, y0, z0),
+                                Point(x1, y0, z0),
+                                Point(x1, y1, z0),
+                                Point(x0, y1, z0),
+                                Point(x0, y1, z1),
+                                Point(x0, y0, z1),
+                                Point(x1, y0, z1),
+                                Point(x1, y1, z1),
+                                mesh);
           CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
         }
       else
@@ -89,8 +96,9 @@ main(int argc, char **argv)
             mesh, CGAL::parameters::number_of_iterations(subdivisions));
           for (const auto v : mesh.vertices())
             {
-              const auto d = mesh.point(v) - Point(a[0], a[1], a[2]);
-              mesh.point(v) = Point(a[0], a[1], a[2]) + d * (radius / std::sqrt(d.squared_length()));
+              const auto d  = mesh.point(v) - Point(a[0], a[1], a[2]);
+              mesh.point(v) = Point(a[0], a[1], a[2]) +
+                              d * (radius / std::sqrt(d.squared_length()));
             }
         }
       if (!CGAL::Polygon_mesh_processing::is_outward_oriented(mesh))
@@ -102,9 +110,12 @@ main(int argc, char **argv)
           CGAL::Euler::remove_face(halfedge(*mesh.faces().begin(), mesh), mesh);
           mesh.collect_garbage();
         }
-      if (!CGAL::IO::write_polygon_mesh(out, mesh, CGAL::parameters::stream_precision(17)))
+      if (!CGAL::IO::write_polygon_mesh(out,
+                                        mesh,
+                                        CGAL::parameters::stream_precision(17)))
         throw std::runtime_error("cannot write " + out);
-      std::cout << out << ": " << mesh.number_of_faces() << " triangles" << std::endl;
+      std::cout << out << ": " << mesh.number_of_faces() << " triangles"
+                << std::endl;
     }
   catch (const std::exception &exc)
     {

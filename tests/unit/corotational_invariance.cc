@@ -28,14 +28,16 @@ namespace
   rotation(const Tensor<1, 3> &axis_angle)
   {
     // Rodrigues' formula.
-    const double angle = axis_angle.norm();
+    const double  angle = axis_angle.norm();
     const Tensor2 K     = skew_matrix(axis_angle / angle);
     return Tensor2(unit_symmetric_tensor<3>()) + std::sin(angle) * K +
            (1 - std::cos(angle)) * K * K;
   }
 
   double
-  tangent_error(const CorotationalLaw &law, const Tensor2 &F, const TangentType type)
+  tangent_error(const CorotationalLaw &law,
+                const Tensor2         &F,
+                const TangentType      type)
   {
     Tensor2 P;
     Tensor4 A;
@@ -68,7 +70,9 @@ namespace
     const Tensor2         R0 = rotation(Tensor<1, 3>({0.3, -0.5, 0.8}));
     Tensor2               P;
     law.evaluate(R0, P, nullptr, TangentType::consistent);
-    check_below("material: |P(R0)| / mu (rigid rotation, Pa/Pa)", P.norm() / law.mu, 1e-12);
+    check_below("material: |P(R0)| / mu (rigid rotation, Pa/Pa)",
+                P.norm() / law.mu,
+                1e-12);
 
     Tensor2 F;
     F[0][0] = 1.1, F[0][1] = 0.3, F[0][2] = -0.1;
@@ -77,15 +81,22 @@ namespace
     Tensor2 P_F, P_RF;
     law.evaluate(F, P_F, nullptr, TangentType::consistent);
     law.evaluate(R0 * F, P_RF, nullptr, TangentType::consistent);
-    check_below("material: |P(R0 F) - R0 P(F)| / |P(F)|", (P_RF - R0 * P_F).norm() / P_F.norm(),
+    check_below("material: |P(R0 F) - R0 P(F)| / |P(F)|",
+                (P_RF - R0 * P_F).norm() / P_F.norm(),
                 1e-12);
 
-    check_below("material: consistent tangent vs central differences (relative)",
-                tangent_error(law, F, TangentType::consistent), 1e-6);
-    check_between("material: warped tangent vs central differences (relative, must differ)",
-                  tangent_error(law, F, TangentType::warped), 1e-3, 10);
+    check_below(
+      "material: consistent tangent vs central differences (relative)",
+      tangent_error(law, F, TangentType::consistent),
+      1e-6);
+    check_between(
+      "material: warped tangent vs central differences (relative, must differ)",
+      tangent_error(law, F, TangentType::warped),
+      1e-3,
+      10);
     check_below("material: warped tangent at F = R0 (relative)",
-                tangent_error(law, R0, TangentType::warped), 1e-6);
+                tangent_error(law, R0, TangentType::warped),
+                1e-6);
 
     // P = dW/dF.
     Tensor2 dW;
@@ -97,13 +108,18 @@ namespace
           Fm[k][L] -= 1e-6;
           dW[k][L] = (law.energy_density(Fp) - law.energy_density(Fm)) / 2e-6;
         }
-    check_below("material: |P - dW/dF| / |P|", (P_F - dW).norm() / P_F.norm(), 1e-6);
+    check_below("material: |P - dW/dF| / |P|",
+                (P_F - dW).norm() / P_F.norm(),
+                1e-6);
   }
 
   // Sorted eigenvalues of dP/dF as a symmetric 9x9 matrix (it is the
   // Hessian of W), and its asymmetry.
   std::vector<double>
-  spectrum(const CorotationalLaw &law, const Tensor2 &F, const TangentType type, double &asymmetry)
+  spectrum(const CorotationalLaw &law,
+           const Tensor2         &F,
+           const TangentType      type,
+           double                &asymmetry)
   {
     Tensor2 P;
     Tensor4 A;
@@ -113,8 +129,10 @@ namespace
     for (unsigned int a = 0; a < 9; ++a)
       for (unsigned int b = 0; b < 9; ++b)
         {
-          M(a, b)   = A[a / 3][a % 3][b / 3][b % 3];
-          asymmetry = std::max(asymmetry, std::abs(M(a, b) - A[b / 3][b % 3][a / 3][a % 3]));
+          M(a, b) = A[a / 3][a % 3][b / 3][b % 3];
+          asymmetry =
+            std::max(asymmetry,
+                     std::abs(M(a, b) - A[b / 3][b % 3][a / 3][a % 3]));
         }
     M.compute_eigenvalues();
     std::vector<double> values(9);
@@ -132,15 +150,23 @@ namespace
     Tensor2               U;
     U[0][0] = 0.85, U[1][1] = 0.92, U[2][2] = 0.97;
     U[0][1] = U[1][0] = 0.03;
-    U[1][2] = U[2][1] = -0.02;
+    U[1][2] = U[2][1]        = -0.02;
     const Tensor2 compressed = R0 * U; // 24 % volume loss
     double        asymmetry;
-    const auto    consistent = spectrum(law, compressed, TangentType::consistent, asymmetry);
-    check_below("projected: asymmetry of the consistent tangent / mu", asymmetry / law.mu, 1e-10);
-    check_below("projected: smallest consistent eigenvalue / mu (compressed, must be < 0)",
-                consistent[0] / law.mu, -0.1);
-    const auto projected = spectrum(law, compressed, TangentType::projected, asymmetry);
-    check_below("projected: asymmetry of the projected tangent / mu", asymmetry / law.mu, 1e-10);
+    const auto    consistent =
+      spectrum(law, compressed, TangentType::consistent, asymmetry);
+    check_below("projected: asymmetry of the consistent tangent / mu",
+                asymmetry / law.mu,
+                1e-10);
+    check_below(
+      "projected: smallest consistent eigenvalue / mu (compressed, must be < 0)",
+      consistent[0] / law.mu,
+      -0.1);
+    const auto projected =
+      spectrum(law, compressed, TangentType::projected, asymmetry);
+    check_below("projected: asymmetry of the projected tangent / mu",
+                asymmetry / law.mu,
+                1e-10);
     std::vector<double> clamped = consistent;
     for (double &v : clamped)
       v = std::max(v, 0.);
@@ -148,8 +174,10 @@ namespace
     double difference = 0;
     for (unsigned int a = 0; a < 9; ++a)
       difference = std::max(difference, std::abs(projected[a] - clamped[a]));
-    check_below("projected: |spectrum - max(consistent spectrum, 0)| / mu (compressed)",
-                difference / law.mu, 1e-9);
+    check_below(
+      "projected: |spectrum - max(consistent spectrum, 0)| / mu (compressed)",
+      difference / law.mu,
+      1e-9);
 
     Tensor2 V = U;
     V[0][0] = 1.1, V[1][1] = 1.05, V[2][2] = 1.02;
@@ -157,15 +185,18 @@ namespace
     Tensor4 A_c, A_p;
     law.evaluate(R0 * V, P, &A_c, TangentType::consistent);
     law.evaluate(R0 * V, P, &A_p, TangentType::projected);
-    check_below("projected: |projected - consistent| / |consistent| (stretched)",
-                (A_p - A_c).norm() / A_c.norm(), 1e-14);
+    check_below(
+      "projected: |projected - consistent| / |consistent| (stretched)",
+      (A_p - A_c).norm() / A_c.norm(),
+      1e-14);
   }
 
   std::string
   scene(const std::string &cell_type, const unsigned int degree)
   {
     return "subsection Mesh\n set File = meshes/cantilever_tet.msh\n set Cell type = " +
-           cell_type + "\nend\nsubsection Discretization\n set Polynomial degree = " +
+           cell_type +
+           "\nend\nsubsection Discretization\n set Polynomial degree = " +
            std::to_string(degree) +
            "\nend\nsubsection Materials\n set Young's modulus = 1:1500, 2:15000\n"
            " set Poisson's ratio = 0.45\n set Density = 1000\nend\n"
@@ -177,15 +208,16 @@ namespace
   {
     const std::string name = cell_type + " degree " + std::to_string(degree);
     Scene             s(scene(cell_type, degree));
-    ForwardProblem &  f = *s.forward;
+    ForwardProblem   &f = *s.forward;
 
     // Rigid rotation of every node about an axis through (0.05, 0, 0) m.
-    const Tensor2 R0     = rotation(Tensor<1, 3>({0.2, 0.5, 0.4})); // ~0.67 rad
+    const Tensor2  R0 = rotation(Tensor<1, 3>({0.2, 0.5, 0.4})); // ~0.67 rad
     const Point<3> center(0.05, 0, 0);
     VectorType     d = f.zero_vector(), w = f.zero_vector();
     for (const Node &node : f.owned_nodes())
       {
-        const Tensor<1, 3> u = R0 * (node.position - center) - (node.position - center);
+        const Tensor<1, 3> u =
+          R0 * (node.position - center) - (node.position - center);
         for (unsigned int c = 0; c < 3; ++c)
           d[node.dofs[c]] = u[c];
       }
@@ -202,13 +234,14 @@ namespace
     f.set_state(d, w, no_load);
     f.evaluate(false);
     check_below(name + ": |f_int(rigid rotation)| / |f_int(1% stretch)|",
-                f.raw_residual().l2_norm() / scale, 1e-10);
+                f.raw_residual().l2_norm() / scale,
+                1e-10);
 
     // Tangent against central differences of the residual, at a bent and
     // rotated state, along a random direction v (zero at fixed DoFs).
-    VectorType state = d, v = f.zero_vector();
-    unsigned int seed = 1;
-    const auto random = [&seed]() {
+    VectorType   state = d, v = f.zero_vector();
+    unsigned int seed   = 1;
+    const auto   random = [&seed]() {
       seed = 1103515245u * seed + 12345u;
       return double(seed % 10000) / 10000. - 0.5;
     };
@@ -242,8 +275,10 @@ namespace
             error += std::pow(diff[node.dofs[c]] + Kv[node.dofs[c]], 2);
             norm += std::pow(Kv[node.dofs[c]], 2);
           }
-    check_below(name + ": assembled consistent tangent vs central differences (relative)",
-                std::sqrt(error / norm), 1e-6);
+    check_below(
+      name + ": assembled consistent tangent vs central differences (relative)",
+      std::sqrt(error / norm),
+      1e-6);
   }
 } // namespace
 

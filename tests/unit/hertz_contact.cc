@@ -13,9 +13,9 @@
 #include <restshape/contact.h>
 #include <restshape/generated_meshes.h>
 
-#include "test_utilities.h"
-
 #include <filesystem>
+
+#include "test_utilities.h"
 
 using namespace dealii;
 using namespace RestShape;
@@ -25,7 +25,7 @@ namespace
 {
   struct Result
   {
-    double force, load, a_num, a_hertz, p_num, p_hertz;
+    double       force, load, a_num, a_hertz, p_num, p_hertz;
     unsigned int newton;
   };
 
@@ -33,41 +33,47 @@ namespace
   solve(const unsigned int refinements)
   {
     const std::string file = std::filesystem::temp_directory_path().string() +
-                             "/restshape_hemisphere_" + std::to_string(refinements) + ".msh";
+                             "/restshape_hemisphere_" +
+                             std::to_string(refinements) + ".msh";
     {
       Triangulation<3> tria;
       make_hemisphere(tria, 50, refinements, 2);
-      write_gmsh(tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1., file);
+      write_gmsh(
+        tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1., file);
     }
-    Scene s("subsection Mesh\n set File = " + file +
-            "\n set Cell type = hexahedra\nend\n"
-            "subsection Discretization\n set Polynomial degree = 2\nend\n"
-            "subsection Materials\n set Young's modulus = 10000\n set Poisson's ratio = 0.3\n"
-            " set Density = 0\nend\n"
-            "subsection Boundary conditions\n set Fixed labels = 2:xy\nend\n"
-            "subsection Loads\n set Surface pressure = 15\n set Pressure labels = 2\nend\n"
-            "subsection Contact\n set Obstacle file = meshes/floor_large.off\n set Side = outside\nend\n");
+    Scene s(
+      "subsection Mesh\n set File = " + file +
+      "\n set Cell type = hexahedra\nend\n"
+      "subsection Discretization\n set Polynomial degree = 2\nend\n"
+      "subsection Materials\n set Young's modulus = 10000\n set Poisson's ratio = 0.3\n"
+      " set Density = 0\nend\n"
+      "subsection Boundary conditions\n set Fixed labels = 2:xy\nend\n"
+      "subsection Loads\n set Surface pressure = 15\n set Pressure labels = 2\nend\n"
+      "subsection Contact\n set Obstacle file = meshes/floor_large.off\n set Side = outside\nend\n");
     ContactProblem contact(s.parameters.contact, *s.forward, s.timer);
     s.forward->set_contact(&contact);
     s.forward->setup();
     contact.setup();
-    const SolveStatistics stats = s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+    const SolveStatistics stats =
+      s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
     std::filesystem::remove(file);
 
     Result r;
-    r.newton          = stats.converged ? stats.newton_iterations : 0;
-    r.force           = contact.total_force(s.forward->raw_residual())[2];
-    r.load            = -s.forward->total_external_force(s.forward->load())[2];
-    const double E    = 1e4 / (1 - 0.3 * 0.3), R = 0.05;
-    r.a_hertz         = std::cbrt(3 * r.force * R / (4 * E));
-    r.p_hertz         = 3 * r.force / (2 * numbers::PI * r.a_hertz * r.a_hertz);
-    r.a_num           = contact.contact_radius(Point<3>(), Tensor<1, 3>({0, 0, 1}));
-    r.p_num           = contact.pressure_range(s.forward->raw_residual()).second;
-    std::cout << "refinements " << refinements << ": " << s.forward->dof_handler().n_dofs()
-              << " DoFs, " << contact.n_active() << " active nodes, " << r.newton
-              << " Newton iterations; F = " << r.force << " N; a = " << r.a_num * 1e3
-              << " mm (Hertz " << r.a_hertz * 1e3 << "), p0 = " << r.p_num << " Pa (Hertz "
-              << r.p_hertz << ")" << std::endl;
+    r.newton       = stats.converged ? stats.newton_iterations : 0;
+    r.force        = contact.total_force(s.forward->raw_residual())[2];
+    r.load         = -s.forward->total_external_force(s.forward->load())[2];
+    const double E = 1e4 / (1 - 0.3 * 0.3), R = 0.05;
+    r.a_hertz = std::cbrt(3 * r.force * R / (4 * E));
+    r.p_hertz = 3 * r.force / (2 * numbers::PI * r.a_hertz * r.a_hertz);
+    r.a_num   = contact.contact_radius(Point<3>(), Tensor<1, 3>({0, 0, 1}));
+    r.p_num   = contact.pressure_range(s.forward->raw_residual()).second;
+    std::cout << "refinements " << refinements << ": "
+              << s.forward->dof_handler().n_dofs() << " DoFs, "
+              << contact.n_active() << " active nodes, " << r.newton
+              << " Newton iterations; F = " << r.force
+              << " N; a = " << r.a_num * 1e3 << " mm (Hertz " << r.a_hertz * 1e3
+              << "), p0 = " << r.p_num << " Pa (Hertz " << r.p_hertz << ")"
+              << std::endl;
     return r;
   }
 } // namespace
@@ -76,20 +82,32 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const Result coarse = solve(2);
-  const Result fine   = solve(3);
+  const Result                     coarse = solve(2);
+  const Result                     fine   = solve(3);
   for (const Result &r : {coarse, fine})
     {
       check_between("converged", r.newton > 0, 1, 1);
-      check_below("contact force vs applied load (relative)", std::abs(r.force - r.load) / r.load,
+      check_below("contact force vs applied load (relative)",
+                  std::abs(r.force - r.load) / r.load,
                   1e-8);
     }
-  const auto err_a = [](const Result &r) { return std::abs(r.a_num - r.a_hertz) / r.a_hertz; };
-  const auto err_p = [](const Result &r) { return std::abs(r.p_num - r.p_hertz) / r.p_hertz; };
-  check_below("fine mesh: contact radius vs Hertz (relative)", err_a(fine), 0.03);
-  check_below("fine mesh: peak pressure vs Hertz (relative)", err_p(fine), 0.03);
-  check_below("coarse mesh: peak pressure vs Hertz (relative)", err_p(coarse), 0.25);
+  const auto err_a = [](const Result &r) {
+    return std::abs(r.a_num - r.a_hertz) / r.a_hertz;
+  };
+  const auto err_p = [](const Result &r) {
+    return std::abs(r.p_num - r.p_hertz) / r.p_hertz;
+  };
+  check_below("fine mesh: contact radius vs Hertz (relative)",
+              err_a(fine),
+              0.03);
+  check_below("fine mesh: peak pressure vs Hertz (relative)",
+              err_p(fine),
+              0.03);
+  check_below("coarse mesh: peak pressure vs Hertz (relative)",
+              err_p(coarse),
+              0.25);
   check_below("peak pressure error decreases under refinement (fine/coarse)",
-              err_p(fine) / err_p(coarse), 0.5);
+              err_p(fine) / err_p(coarse),
+              0.5);
   return exit_code();
 }

@@ -14,10 +14,10 @@
 #include <restshape/image_mesher.h>
 #include <restshape/obstacle.h>
 
-#include "test_utilities.h"
-
 #include <cmath>
 #include <map>
+
+#include "test_utilities.h"
 
 using namespace dealii;
 using namespace RestShape;
@@ -26,16 +26,18 @@ using namespace RestShape::Test;
 int
 main()
 {
-  const LabelledImage image = read_labelled_image("tests/data/sphere_labels.nii", "--image");
-  const Point<3>      centre(16, 4, 34);
+  const LabelledImage image =
+    read_labelled_image("tests/data/sphere_labels.nii", "--image");
+  const Point<3> centre(16, 4, 34);
   check_below("voxel (12,12,12) at the ball's centre (mm)",
-              image.position(12, 12, 12).distance(centre), 1e-12);
+              image.position(12, 12, 12).distance(centre),
+              1e-12);
   const auto counts = image.label_counts();
 
   ImageMeshOptions options;
-  options.cell_size      = 4;
-  options.facet_size     = 4;
-  options.facet_distance = 0.5;
+  options.cell_size          = 4;
+  options.facet_size         = 4;
+  options.facet_distance     = 0.5;
   const MeshDescription mesh = mesh_labelled_image(image, options);
 
   MeshDescription in_metres = mesh;
@@ -60,30 +62,39 @@ main()
     {
       const auto &v = mesh.vertices;
       const auto &c = cell.vertices;
-      moment += cross_product_3d(v[c[1]] - v[c[0]], v[c[2]] - v[c[0]]) * (v[c[3]] - v[c[0]]) / 6 *
+      moment += cross_product_3d(v[c[1]] - v[c[0]], v[c[2]] - v[c[0]]) *
+                (v[c[3]] - v[c[0]]) / 6 *
                 (Tensor<1, 3>(v[c[0]]) + v[c[1]] + v[c[2]] + v[c[3]]) / 4;
     }
   std::map<unsigned int, double> volume = q.volume_per_label;
   const double                   total  = q.total_volume;
-  const double voxel = 8; // mm^3
+  const double                   voxel  = 8; // mm^3
   for (const unsigned int label : {1u, 2u})
-    check_between("volume of label " + std::to_string(label) + " / voxelised volume",
-                  volume[label] / (counts.at(label) * voxel), 0.93, 1.03);
-  check_between("volume of label 2 / (4/3 pi 8^3)", volume[2] / (4. / 3 * M_PI * 512), 0.85, 1.15);
+    check_between("volume of label " + std::to_string(label) +
+                    " / voxelised volume",
+                  volume[label] / (counts.at(label) * voxel),
+                  0.93,
+                  1.03);
+  check_between("volume of label 2 / (4/3 pi 8^3)",
+                volume[2] / (4. / 3 * M_PI * 512),
+                0.85,
+                1.15);
   check_below("distance of the mesh centroid from (16, 4, 34) mm",
-              (Point<3>(moment / total)).distance(centre), 0.3);
+              (Point<3>(moment / total)).distance(centre),
+              0.3);
 
   std::cout << mesh.vertices.size() << " nodes, " << mesh.cells.size()
             << " tetrahedra; dihedral angles " << q.min_dihedral_deg << " to "
-            << q.max_dihedral_deg << " deg, radius-edge ratio max " << q.max_radius_edge
-            << std::endl;
+            << q.max_dihedral_deg << " deg, radius-edge ratio max "
+            << q.max_radius_edge << std::endl;
   check_between("smallest dihedral angle (deg)", q.min_dihedral_deg, 5, 90);
 
   // The enclosing surface.
   const unsigned int n_triangles =
     write_enclosing_surface(image, 3, 0, 3, 0.3, "image_mesher_skull.off");
   const Obstacle skull("image_mesher_skull.off", 1e-3, true);
-  std::cout << "enclosing surface: " << n_triangles << " triangles" << std::endl;
+  std::cout << "enclosing surface: " << n_triangles << " triangles"
+            << std::endl;
   double min_gap = 1e9, max_gap = -1e9;
   for (const auto &p : in_metres.vertices)
     if (std::abs(p.distance(centre * 1e-3) - 18e-3) < 2e-3)
@@ -92,8 +103,16 @@ main()
         min_gap        = std::min(min_gap, g);
         max_gap        = std::max(max_gap, g);
       }
-  check_between("smallest distance of a surface node to the enclosing surface (mm)", min_gap, 2, 3.5);
-  check_between("largest distance of a surface node to the enclosing surface (mm)", max_gap, 2.5, 4.5);
+  check_between(
+    "smallest distance of a surface node to the enclosing surface (mm)",
+    min_gap,
+    2,
+    3.5);
+  check_between(
+    "largest distance of a surface node to the enclosing surface (mm)",
+    max_gap,
+    2.5,
+    4.5);
   std::remove("image_mesher_skull.off");
   return exit_code();
 }

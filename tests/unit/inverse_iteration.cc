@@ -30,36 +30,51 @@ namespace
   };
 
   Run
-  run(const std::string &mesh, const std::string &acceleration, const std::string &obstacle)
+  run(const std::string &mesh,
+      const std::string &acceleration,
+      const std::string &obstacle)
   {
-    Scene s("subsection Mesh\n set File = " + mesh +
-            "\nend\nsubsection Discretization\n set Polynomial degree = 2\nend\n"
-            "subsection Materials\n set Young's modulus = 10000\n set Poisson's ratio = 0\n"
-            " set Density = 1000\nend\n"
-            "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
-            "subsection Contact\n set Obstacle file = " + obstacle + "\nend\n"
-            "subsection Inverse problem\n set Enabled = true\n set Tolerance = 1e-8\n"
-            " set Acceleration = " + acceleration + "\nend\n");
+    Scene s(
+      "subsection Mesh\n set File = " + mesh +
+      "\nend\nsubsection Discretization\n set Polynomial degree = 2\nend\n"
+      "subsection Materials\n set Young's modulus = 10000\n set Poisson's ratio = 0\n"
+      " set Density = 1000\nend\n"
+      "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
+      "subsection Contact\n set Obstacle file = " +
+      obstacle +
+      "\nend\n"
+      "subsection Inverse problem\n set Enabled = true\n set Tolerance = 1e-8\n"
+      " set Acceleration = " +
+      acceleration + "\nend\n");
     std::unique_ptr<ContactProblem> contact;
     if (!obstacle.empty())
       {
-        contact = std::make_unique<ContactProblem>(s.parameters.contact, *s.forward, s.timer);
+        contact = std::make_unique<ContactProblem>(s.parameters.contact,
+                                                   *s.forward,
+                                                   s.timer);
         s.forward->set_contact(contact.get());
         s.forward->setup();
         contact->setup();
       }
     Timer          wall;
-    InverseProblem inverse(s.parameters.inverse, *s.forward, contact.get(), nullptr, s.timer,
-                           s.pcout, wall);
-    Run r;
+    InverseProblem inverse(s.parameters.inverse,
+                           *s.forward,
+                           contact.get(),
+                           nullptr,
+                           s.timer,
+                           s.pcout,
+                           wall);
+    Run            r;
     r.result = inverse.run(s.forward->zero_vector(), 0);
     r.rest   = s.forward->zero_vector();
     r.rest   = s.forward->rest_displacement();
-    std::cout << mesh << ", " << acceleration << (obstacle.empty() ? "" : ", " + obstacle) << ": "
-              << (r.result.converged ? "converged" : "stopped (" + r.result.reason + ")")
-              << " after " << r.result.iterations << " iterations, " << r.result.forward_solves
-              << " forward solves, mean error " << r.result.mean_error * 1e3 << " mm"
-              << std::endl;
+    std::cout << mesh << ", " << acceleration
+              << (obstacle.empty() ? "" : ", " + obstacle) << ": "
+              << (r.result.converged ? "converged" :
+                                       "stopped (" + r.result.reason + ")")
+              << " after " << r.result.iterations << " iterations, "
+              << r.result.forward_solves << " forward solves, mean error "
+              << r.result.mean_error * 1e3 << " mm" << std::endl;
     return r;
   }
 } // namespace
@@ -76,19 +91,29 @@ main(int argc, char **argv)
   VectorType difference = plain.rest;
   difference -= anderson.rest;
   check_below("column: same rest shape, |w_plain - w_anderson| / |w|",
-              difference.l2_norm() / plain.rest.l2_norm(), 1e-6);
+              difference.l2_norm() / plain.rest.l2_norm(),
+              1e-6);
   check_below("column: Anderson iterations / plain iterations",
-              double(anderson.result.iterations) / plain.result.iterations, 1);
+              double(anderson.result.iterations) / plain.result.iterations,
+              1);
 
-  const Run free_plain    = run("meshes/plate_tet.msh", "none", "");
-  const Run slot_plain    = run("meshes/plate_tet.msh", "none", "meshes/plate_slot.off");
+  const Run free_plain = run("meshes/plate_tet.msh", "none", "");
+  const Run slot_plain =
+    run("meshes/plate_tet.msh", "none", "meshes/plate_slot.off");
   const Run free_anderson = run("meshes/plate_tet.msh", "anderson", "");
   check_between("plate without walls: the plain update diverges",
                 !free_plain.result.converged &&
-                  free_plain.result.reason.find("diverged") != std::string::npos,
-                1, 1);
-  check_between("plate in the slot: the plain update converges", slot_plain.result.converged, 1,
+                  free_plain.result.reason.find("diverged") !=
+                    std::string::npos,
+                1,
                 1);
-  check_between("plate without walls: Anderson converges", free_anderson.result.converged, 1, 1);
+  check_between("plate in the slot: the plain update converges",
+                slot_plain.result.converged,
+                1,
+                1);
+  check_between("plate without walls: Anderson converges",
+                free_anderson.result.converged,
+                1,
+                1);
   return exit_code();
 }

@@ -13,15 +13,18 @@ using namespace RestShape::Test;
 namespace
 {
   VectorType
-  solve(const std::string &cell_type, const std::string &solver, SolveStatistics &stats)
+  solve(const std::string &cell_type,
+        const std::string &solver,
+        SolveStatistics   &stats)
   {
-    Scene s("subsection Mesh\n set File = meshes/cantilever_tet.msh\n set Cell type = " +
-            cell_type +
-            "\nend\nsubsection Materials\n set Young's modulus = 100000\n"
-            " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
-            "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
-            "subsection Solver\n set Linear solver = " +
-            solver + "\n set Linear solver tolerance = 1e-8\nend\n");
+    Scene s(
+      "subsection Mesh\n set File = meshes/cantilever_tet.msh\n set Cell type = " +
+      cell_type +
+      "\nend\nsubsection Materials\n set Young's modulus = 100000\n"
+      " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
+      "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
+      "subsection Solver\n set Linear solver = " +
+      solver + "\n set Linear solver tolerance = 1e-8\nend\n");
     ForwardProblem &f = *s.forward;
     stats             = f.solve(f.scene_load(), f.zero_vector());
     VectorType d      = f.zero_vector();
@@ -39,14 +42,19 @@ main(int argc, char **argv)
       SolveStatistics  direct_stats, amg_stats;
       const VectorType direct = solve(cell_type, "direct", direct_stats);
       VectorType       amg    = solve(cell_type, "cg-amg", amg_stats);
-      std::cout << cell_type << ": Newton iterations direct " << direct_stats.newton_iterations
-                << ", cg-amg " << amg_stats.newton_iterations << " (" << amg_stats.linear_iterations
-                << " CG/GMRES iterations in all)" << std::endl;
+      std::cout << cell_type << ": Newton iterations direct "
+                << direct_stats.newton_iterations << ", cg-amg "
+                << amg_stats.newton_iterations << " ("
+                << amg_stats.linear_iterations << " CG/GMRES iterations in all)"
+                << std::endl;
       check_between(cell_type + ": both converged",
-                    direct_stats.converged && amg_stats.converged, 1, 1);
+                    direct_stats.converged && amg_stats.converged,
+                    1,
+                    1);
       amg -= direct;
       check_below(cell_type + ": |d_amg - d_direct| / |d_direct|",
-                  amg.l2_norm() / direct.l2_norm(), 1e-7);
+                  amg.l2_norm() / direct.l2_norm(),
+                  1e-7);
     }
   return exit_code();
 }

@@ -25,13 +25,14 @@ namespace
   Result
   solve(const std::string &tangent)
   {
-    Scene s("subsection Mesh\n set File = meshes/cantilever_tet.msh\nend\n"
-            "subsection Discretization\n set Polynomial degree = 2\n set Tangent = " +
-            tangent +
-            "\nend\nsubsection Materials\n set Young's modulus = 100000\n"
-            " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
-            "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
-            "subsection Solver\n set Maximum Newton iterations = 200\nend\n");
+    Scene s(
+      "subsection Mesh\n set File = meshes/cantilever_tet.msh\nend\n"
+      "subsection Discretization\n set Polynomial degree = 2\n set Tangent = " +
+      tangent +
+      "\nend\nsubsection Materials\n set Young's modulus = 100000\n"
+      " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
+      "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
+      "subsection Solver\n set Maximum Newton iterations = 200\nend\n");
     ForwardProblem &f = *s.forward;
     Result          r;
     r.stats  = f.solve(f.scene_load(), f.zero_vector());
@@ -54,12 +55,13 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const Result consistent = solve("consistent");
-  const Result warped     = solve("warped");
-  const Result projected  = solve("projected");
-  const Result adaptive   = solve("adaptive");
-  std::cout << "Newton iterations: consistent " << consistent.stats.newton_iterations
-            << ", warped " << warped.stats.newton_iterations << ", projected "
+  const Result                     consistent = solve("consistent");
+  const Result                     warped     = solve("warped");
+  const Result                     projected  = solve("projected");
+  const Result                     adaptive   = solve("adaptive");
+  std::cout << "Newton iterations: consistent "
+            << consistent.stats.newton_iterations << ", warped "
+            << warped.stats.newton_iterations << ", projected "
             << projected.stats.newton_iterations << ", adaptive "
             << adaptive.stats.newton_iterations << "; tip deflection "
             << consistent.tip_mm << " mm" << std::endl;
@@ -70,21 +72,33 @@ main(int argc, char **argv)
 
   check_between("consistent converged", consistent.stats.converged, 1, 1);
   check_between("warped converged", warped.stats.converged, 1, 1);
-  check_between("tip deflection (mm): a large-rotation case", consistent.tip_mm, 40, 100);
+  check_between("tip deflection (mm): a large-rotation case",
+                consistent.tip_mm,
+                40,
+                100);
   check_between("consistent: convergence order of the last steps",
-                order(consistent.stats.residual_history), 1.8, 100);
+                order(consistent.stats.residual_history),
+                1.8,
+                100);
   check_between("warped needs more iterations (ratio warped/consistent)",
-                double(warped.stats.newton_iterations) / consistent.stats.newton_iterations, 1.5,
+                double(warped.stats.newton_iterations) /
+                  consistent.stats.newton_iterations,
+                1.5,
                 100);
   check_below("both tangents reach the same equilibrium (tip difference, mm)",
-              std::abs(consistent.tip_mm - warped.tip_mm), 1e-6);
+              std::abs(consistent.tip_mm - warped.tip_mm),
+              1e-6);
   check_between("projected converged", projected.stats.converged, 1, 1);
   check_between("adaptive converged", adaptive.stats.converged, 1, 1);
   check_below("projected: same equilibrium (tip difference, mm)",
-              std::abs(consistent.tip_mm - projected.tip_mm), 1e-6);
+              std::abs(consistent.tip_mm - projected.tip_mm),
+              1e-6);
   check_below("adaptive: same equilibrium (tip difference, mm)",
-              std::abs(consistent.tip_mm - adaptive.tip_mm), 1e-6);
+              std::abs(consistent.tip_mm - adaptive.tip_mm),
+              1e-6);
   check_between("adaptive: convergence order of the last steps",
-                order(adaptive.stats.residual_history), 1.8, 100);
+                order(adaptive.stats.residual_history),
+                1.8,
+                100);
   return exit_code();
 }

@@ -27,24 +27,28 @@ namespace RestShape::Test
   check_below(const std::string &name, const double value, const double limit)
   {
     const bool ok = std::isfinite(value) && value <= limit;
-    std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << value << " (limit " << limit << ")"
-              << std::endl;
+    std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << value << " (limit "
+              << limit << ")" << std::endl;
     failures += !ok;
   }
 
   inline void
-  check_between(const std::string &name, const double value, const double low, const double high)
+  check_between(const std::string &name,
+                const double       value,
+                const double       low,
+                const double       high)
   {
     const bool ok = std::isfinite(value) && value >= low && value <= high;
-    std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << value << " (expected in [" << low
-              << ", " << high << "])" << std::endl;
+    std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << value
+              << " (expected in [" << low << ", " << high << "])" << std::endl;
     failures += !ok;
   }
 
   inline int
   exit_code()
   {
-    std::cout << (failures == 0 ? "all checks passed" : "checks FAILED: " + std::to_string(failures))
+    std::cout << (failures == 0 ? "all checks passed" :
+                                  "checks FAILED: " + std::to_string(failures))
               << std::endl;
     return failures == 0 ? 0 : 1;
   }
@@ -55,23 +59,28 @@ namespace RestShape::Test
   {
     Scene(const std::string &prm_text)
       : pcout(std::cout, false)
-      , timer(MPI_COMM_WORLD, pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+      , timer(MPI_COMM_WORLD,
+              pcout,
+              dealii::TimerOutput::never,
+              dealii::TimerOutput::wall_times)
     {
       Parameters::declare_parameters(prm);
       prm.parse_input_from_string(prm_text);
       parameters.parse_parameters(prm);
-      mesh      = std::make_unique<LabelledMesh>(parameters.mesh, MPI_COMM_WORLD);
-      materials = std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
-      forward = std::make_unique<ForwardProblem>(parameters, *mesh, *materials, timer, pcout);
+      mesh = std::make_unique<LabelledMesh>(parameters.mesh, MPI_COMM_WORLD);
+      materials =
+        std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
+      forward = std::make_unique<ForwardProblem>(
+        parameters, *mesh, *materials, timer, pcout);
       forward->setup();
     }
 
-    dealii::ParameterHandler       prm;
-    Parameters                     parameters;
-    dealii::ConditionalOStream     pcout;
-    dealii::TimerOutput            timer;
-    std::unique_ptr<LabelledMesh>  mesh;
-    std::unique_ptr<MaterialTable> materials;
+    dealii::ParameterHandler        prm;
+    Parameters                      parameters;
+    dealii::ConditionalOStream      pcout;
+    dealii::TimerOutput             timer;
+    std::unique_ptr<LabelledMesh>   mesh;
+    std::unique_ptr<MaterialTable>  materials;
     std::unique_ptr<ForwardProblem> forward;
   };
 } // namespace RestShape::Test
