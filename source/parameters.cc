@@ -142,12 +142,12 @@ namespace RestShape
   DiscretizationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    degree                         = prm.get_integer("Polynomial degree");
-    const std::string tangent_name = prm.get("Tangent");
-    tangent = tangent_name == "warped"    ? TangentType::warped :
-              tangent_name == "projected" ? TangentType::projected :
-              tangent_name == "adaptive"  ? TangentType::adaptive :
-                                            TangentType::consistent;
+    degree       = prm.get_integer("Polynomial degree");
+    tangent_name = prm.get("Tangent");
+    tangent      = tangent_name == "warped"    ? TangentType::warped :
+                   tangent_name == "projected" ? TangentType::projected :
+                   tangent_name == "adaptive"  ? TangentType::adaptive :
+                                                 TangentType::consistent;
     prm.leave_subsection();
   }
 

@@ -388,15 +388,7 @@ namespace RestShape
     summary.set("cell_type",
                 std::string(mesh->is_simplex() ? "tetrahedra" : "hexahedra"));
     summary.set("polynomial_degree", long(parameters.discretization.degree));
-    summary.set("tangent",
-                std::string(
-                  parameters.discretization.tangent == TangentType::consistent ?
-                    "consistent" :
-                  parameters.discretization.tangent == TangentType::projected ?
-                    "projected" :
-                  parameters.discretization.tangent == TangentType::adaptive ?
-                    "adaptive" :
-                    "warped"));
+    summary.set("tangent", parameters.discretization.tangent_name);
     summary.set("n_cells", long(mesh->triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(n_nodes));
     summary.set("n_dofs", long(forward->dof_handler().n_dofs()));

@@ -60,6 +60,7 @@ namespace RestShape
   {
     unsigned int degree;
     TangentType  tangent;
+    std::string  tangent_name; // as in the .prm, for summary.json
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
