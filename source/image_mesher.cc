@@ -133,13 +133,19 @@ namespace RestShape
                               options.radius_edge,
                             params::cell_size = options.cell_size);
     seed_cgal(options.seed);
-    const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
-      domain,
-      criteria,
+    const auto perturb =
       params::perturb(params::sliver_bound = options.sliver_bound,
-                      params::time_limit   = 0),
+                      params::time_limit   = 0);
+    const auto exude =
       params::exude(params::sliver_bound = options.sliver_bound,
-                    params::time_limit   = 0));
+                    params::time_limit   = 0);
+    // manifold: every subdomain's surface a manifold (no two regions
+    // touching at a vertex or along an edge only).
+    const C3t3 c3t3 =
+      options.manifold ?
+        CGAL::make_mesh_3<C3t3>(
+          domain, criteria, perturb, exude, params::manifold()) :
+        CGAL::make_mesh_3<C3t3>(domain, criteria, perturb, exude);
 
     MeshDescription                           mesh;
     std::map<Tr::Vertex_handle, unsigned int> index;

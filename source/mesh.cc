@@ -9,6 +9,7 @@
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/mesh.h>
+#include <restshape/mesh_pieces.h>
 #include <unistd.h>
 
 #include <array>
@@ -498,6 +499,17 @@ namespace RestShape
         check_mesh(mesh, prm.file);
       }
 
+    const MeshPieces pieces = face_connected_pieces(mesh);
+    if (pieces.n_cells.size() > 1 &&
+        Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "Warning: " << prm.file << " (Mesh/File) has "
+                << pieces.n_cells.size() << " pieces not joined by faces ("
+                << pieces.n_cells[0] << " cells in the largest, "
+                << pieces.n_cells.back()
+                << " in the smallest). A piece held at a vertex or an edge "
+                   "can rotate freely about it and stop Newton's method; "
+                   "restshape-mesh removes small ones."
+                << std::endl;
     for (const auto &cell : mesh.cells)
       ++counts[cell.material_id];
     const bool simplex = prm.cell_type == CellType::tetrahedra;

@@ -3,7 +3,8 @@
 //
 //   restshape-mesh --image LABELS.nii[.gz] --out MESH.msh
 //       [--cell-size MM] [--facet-size MM] [--facet-distance MM]
-//       [--sliver-bound DEG] [--seed N]
+//       [--sliver-bound DEG] [--seed N] [--min-piece-fraction F]
+//       [--manifold 0|1]
 //       [--skull-out SKULL.stl --skull-gap MM [--skull-closing MM]
 //        [--skull-facet-size MM]]
 //
@@ -13,6 +14,10 @@
 // Contact/Obstacle file with Side = inside. Before the offset, the labelled
 // region is closed morphologically with a ball of --skull-closing mm
 // (default 10; 0 = none), so that the skull bridges sulci and fissures.
+// Pieces of the mesh joined to the rest only at vertices or edges (Mesh_3
+// leaves them where labelled voxels touch diagonally) and smaller than
+// --min-piece-fraction times the largest piece (default 0.01; 0 keeps all)
+// are removed: they would hinge freely and stop Newton's method.
 #include <deal.II/base/timer.h>
 
 #include <restshape/atomic_file.h>
@@ -21,6 +26,7 @@
 #include <restshape/input_error.h>
 #include <restshape/labelled_image.h>
 #include <restshape/mesh.h>
+#include <restshape/mesh_pieces.h>
 #include <restshape/obstacle.h>
 
 #include <filesystem>
@@ -64,7 +70,8 @@ main(int argc, char **argv)
       std::string      image_file, out, skull_out;
       ImageMeshOptions options;
       double           skull_gap = 0, skull_facet_size = 0, skull_closing = 10;
-      bool             facet_size_given = false;
+      double           min_piece_fraction = 0.01;
+      bool             facet_size_given   = false;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -94,6 +101,24 @@ main(int argc, char **argv)
           else if (arg == "--seed")
             options.seed =
               static_cast<unsigned int>(parse_positive(arg, value));
+          else if (arg == "--manifold")
+            {
+              if (value != "0" && value != "1")
+                throw InputError("",
+                                 arg,
+                                 "got " + value + " (expected 0 or 1)");
+              options.manifold = value == "1";
+            }
+          else if (arg == "--min-piece-fraction")
+            {
+              min_piece_fraction =
+                value == "0" ? 0. : parse_positive(arg, value);
+              if (min_piece_fraction > 1)
+                throw InputError("",
+                                 arg,
+                                 "got " + value +
+                                   " (expected a fraction from 0 to 1)");
+            }
           else if (arg == "--skull-gap")
             skull_gap = parse_positive(arg, value);
           else if (arg == "--skull-closing")
@@ -106,7 +131,7 @@ main(int argc, char **argv)
               arg,
               "unknown option; expected --image, --out, --cell-size, "
               "--facet-size, --facet-distance, --sliver-bound, --seed, "
-              "--skull-out, --skull-gap, --skull-closing or --skull-facet-size");
+              "--min-piece-fraction, --manifold, --skull-out, --skull-gap, --skull-closing or --skull-facet-size");
         }
       if (image_file.empty())
         throw InputError("",
@@ -148,8 +173,8 @@ main(int argc, char **argv)
                   << " cm^3)";
       std::cout << std::endl;
 
-      dealii::Timer         timer;
-      const MeshDescription mesh = mesh_labelled_image(image, options);
+      dealii::Timer   timer;
+      MeshDescription mesh = mesh_labelled_image(image, options);
       if (mesh.cells.empty())
         throw InputError(
           image_file,
@@ -162,6 +187,18 @@ main(int argc, char **argv)
                 << " mm): " << mesh.vertices.size() << " nodes, "
                 << mesh.cells.size() << " tetrahedra in " << timer.wall_time()
                 << " s" << std::endl;
+      const RemovedPieces removed =
+        remove_small_pieces(mesh, min_piece_fraction);
+      if (removed.n_pieces > 0)
+        std::cout << "removed " << removed.n_cells << " tetrahedra in "
+                  << removed.n_pieces
+                  << " pieces joined to the body only at vertices or edges "
+                     "(smaller than --min-piece-fraction "
+                  << min_piece_fraction << " of the largest)" << std::endl;
+      const unsigned int n_pieces = face_connected_pieces(mesh).n_cells.size();
+      if (n_pieces > 1)
+        std::cout << "warning: the mesh has " << n_pieces
+                  << " pieces not joined by faces" << std::endl;
 
       const MeshQuality                    q = mesh_quality(mesh);
       std::map<unsigned int, unsigned int> n_per_label;

@@ -1,0 +1,45 @@
+// Face-connected pieces of a mesh. Cells joined to the rest of a body only
+// at a vertex or an edge (as Mesh_3 leaves them where labelled voxels touch
+// diagonally) can rotate about that hinge without resistance, which stops
+// Newton's method on fine brain meshes: the mesher removes them, and
+// LabelledMesh warns about them in meshes from elsewhere.
+#ifndef restshape_mesh_pieces_h
+#define restshape_mesh_pieces_h
+
+#include <restshape/mesh.h>
+
+#include <vector>
+
+namespace RestShape
+{
+  struct MeshPieces
+  {
+    /// For every cell, its piece; piece 0 is the largest.
+    std::vector<unsigned int> piece_of_cell;
+    /// Number of cells per piece, largest first.
+    std::vector<unsigned int> n_cells;
+  };
+
+  /**
+   * Split the cells of @p mesh (tetrahedra or hexahedra) into pieces in
+   * which any two cells are joined by a chain of cells sharing faces.
+   */
+  MeshPieces
+  face_connected_pieces(const MeshDescription &mesh);
+
+  struct RemovedPieces
+  {
+    unsigned int n_pieces = 0;
+    unsigned int n_cells  = 0;
+  };
+
+  /**
+   * Remove the pieces with fewer cells than @p fraction times the largest
+   * one, and the vertices no cell uses any more. Labels are kept; separate
+   * bodies of comparable size stay.
+   */
+  RemovedPieces
+  remove_small_pieces(MeshDescription &mesh, const double fraction);
+} // namespace RestShape
+
+#endif

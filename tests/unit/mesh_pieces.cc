@@ -1,0 +1,109 @@
+// Face-connected pieces of a mesh (source/mesh_pieces.cc), on meshes whose
+// pieces are known by construction:
+//  1. Three tetrahedra joined by faces and a fourth touching them at one
+//     vertex only: two pieces of 3 and 1 cells.
+//  2. remove_small_pieces with fraction 0.5 removes the single tetrahedron
+//     and its three own vertices, renumbers the rest and keeps coordinates
+//     and labels; with fraction 0.2 it removes nothing.
+//  3. Hexahedra: two sharing a face are one piece, a third sharing only an
+//     edge with them is a piece of its own.
+#include <restshape/mesh_pieces.h>
+
+#include "test_utilities.h"
+
+using namespace dealii;
+using namespace RestShape;
+using namespace RestShape::Test;
+
+namespace
+{
+  CellData<3>
+  cell(const std::vector<unsigned int> &vertices, const unsigned int label)
+  {
+    CellData<3> c(vertices.size());
+    c.vertices    = vertices;
+    c.material_id = label;
+    return c;
+  }
+} // namespace
+
+int
+main()
+{
+  MeshDescription tets;
+  for (unsigned int v = 0; v < 8; ++v)
+    tets.vertices.emplace_back(v, v * v, 1. / (v + 1));
+  tets.cells              = {cell({0, 1, 2, 3}, 1),
+                             cell({4, 5, 6, 7}, 2), // touches the others at vertex 4 only
+                             cell({1, 2, 3, 4}, 1),
+                             cell({0, 2, 3, 4}, 3)};
+  const MeshPieces pieces = face_connected_pieces(tets);
+  check_below("pieces - 2", std::abs(int(pieces.n_cells.size()) - 2), 0);
+  check_below("cells in the largest piece - 3",
+              std::abs(int(pieces.n_cells[0]) - 3),
+              0);
+  check_below("piece of the vertex-joined cell - 1",
+              std::abs(int(pieces.piece_of_cell[1]) - 1),
+              0);
+  check_below("piece of the face-joined cells",
+              pieces.piece_of_cell[0] + pieces.piece_of_cell[2] +
+                pieces.piece_of_cell[3],
+              0);
+
+  MeshDescription     unchanged = tets;
+  const RemovedPieces none      = remove_small_pieces(unchanged, 0.2);
+  check_below("removed with fraction 0.2", none.n_cells + none.n_pieces, 0);
+  check_below("cells kept with fraction 0.2 - 4",
+              std::abs(int(unchanged.cells.size()) - 4),
+              0);
+
+  MeshDescription     cleaned = tets;
+  const RemovedPieces removed = remove_small_pieces(cleaned, 0.5);
+  check_below("removed pieces - 1", std::abs(int(removed.n_pieces) - 1), 0);
+  check_below("removed cells - 1", std::abs(int(removed.n_cells) - 1), 0);
+  check_below("vertices left - 5",
+              std::abs(int(cleaned.vertices.size()) - 5),
+              0);
+  double mismatch = 0;
+  for (unsigned int c = 0; c < 3; ++c)
+    {
+      const CellData<3> &before = tets.cells[c == 0 ? 0 : c + 1];
+      const CellData<3> &after  = cleaned.cells[c];
+      mismatch += std::abs(int(before.material_id) - int(after.material_id));
+      for (unsigned int v = 0; v < 4; ++v)
+        mismatch += tets.vertices[before.vertices[v]].distance(
+          cleaned.vertices[after.vertices[v]]);
+    }
+  check_below("coordinates and labels of the kept cells", mismatch, 0);
+  check_below("pieces after removal - 1",
+              std::abs(int(face_connected_pieces(cleaned).n_cells.size()) - 1),
+              0);
+
+  // Hexahedra on a grid of unit cubes: [0,1]x[0,1]x[0,1] and
+  // [1,2]x[0,1]x[0,1] share the face x = 1; [2,3]x[1,2]x[0,1] shares only
+  // the edge x = 2, y = 1 with the second.
+  MeshDescription hexes;
+  for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int j = 0; j < 3; ++j)
+      for (unsigned int i = 0; i < 4; ++i)
+        hexes.vertices.emplace_back(i, j, k);
+  const auto hex =
+    [](const unsigned int i, const unsigned int j, const unsigned int k) {
+      std::vector<unsigned int> v;
+      for (unsigned int c = 0; c < 8; ++c) // deal.II's lexicographic order
+        v.push_back((i + c % 2) + 4 * (j + (c / 2) % 2) + 12 * (k + c / 4));
+      return cell(v, 1);
+    };
+  hexes.cells                 = {hex(0, 0, 0), hex(1, 0, 0), hex(2, 1, 0)};
+  const MeshPieces hex_pieces = face_connected_pieces(hexes);
+  check_below("hexahedral pieces - 2",
+              std::abs(int(hex_pieces.n_cells.size()) - 2),
+              0);
+  check_below("face-joined hexahedra in one piece",
+              hex_pieces.piece_of_cell[0] + hex_pieces.piece_of_cell[1],
+              0);
+  check_below("edge-joined hexahedron on its own - 1",
+              std::abs(int(hex_pieces.piece_of_cell[2]) - 1),
+              0);
+  return exit_code();
+}
