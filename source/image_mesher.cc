@@ -133,19 +133,13 @@ namespace RestShape
                               options.radius_edge,
                             params::cell_size = options.cell_size);
     seed_cgal(options.seed);
-    const auto perturb =
+    const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
+      domain,
+      criteria,
       params::perturb(params::sliver_bound = options.sliver_bound,
-                      params::time_limit   = 0);
-    const auto exude =
+                      params::time_limit   = 0),
       params::exude(params::sliver_bound = options.sliver_bound,
-                    params::time_limit   = 0);
-    // manifold: every subdomain's surface a manifold (no two regions
-    // touching at a vertex or along an edge only).
-    const C3t3 c3t3 =
-      options.manifold ?
-        CGAL::make_mesh_3<C3t3>(
-          domain, criteria, perturb, exude, params::manifold()) :
-        CGAL::make_mesh_3<C3t3>(domain, criteria, perturb, exude);
+                    params::time_limit   = 0));
 
     MeshDescription                           mesh;
     std::map<Tr::Vertex_handle, unsigned int> index;

@@ -19,13 +19,11 @@ namespace RestShape
     double facet_size = 10; // largest surface-triangle circumradius
     double facet_distance =
       1.5; // largest distance between facet and image boundary
-    double facet_angle  = 25;  // smallest surface-triangle angle (degrees)
-    double radius_edge  = 3;   // largest circumradius / shortest edge
-    double sliver_bound = 12;  // dihedral angle (degrees) that perturbation
-                               // and exudation try to exceed
-    unsigned int seed = 0;     // CGAL's random seed: same input, same mesh
-    bool manifold     = false; // Mesh_3's manifold option: no pinched vertices
-                               // or edges where regions touch diagonally
+    double facet_angle  = 25; // smallest surface-triangle angle (degrees)
+    double radius_edge  = 3;  // largest circumradius / shortest edge
+    double sliver_bound = 12; // dihedral angle (degrees) that perturbation
+                              // and exudation try to exceed
+    unsigned int seed = 0;    // CGAL's random seed: same input, same mesh
   };
 
   /**

@@ -4,7 +4,6 @@
 //   restshape-mesh --image LABELS.nii[.gz] --out MESH.msh
 //       [--cell-size MM] [--facet-size MM] [--facet-distance MM]
 //       [--sliver-bound DEG] [--seed N] [--min-piece-fraction F]
-//       [--manifold 0|1]
 //       [--skull-out SKULL.stl --skull-gap MM [--skull-closing MM]
 //        [--skull-facet-size MM]]
 //
@@ -101,14 +100,6 @@ main(int argc, char **argv)
           else if (arg == "--seed")
             options.seed =
               static_cast<unsigned int>(parse_positive(arg, value));
-          else if (arg == "--manifold")
-            {
-              if (value != "0" && value != "1")
-                throw InputError("",
-                                 arg,
-                                 "got " + value + " (expected 0 or 1)");
-              options.manifold = value == "1";
-            }
           else if (arg == "--min-piece-fraction")
             {
               min_piece_fraction =
@@ -131,7 +122,7 @@ main(int argc, char **argv)
               arg,
               "unknown option; expected --image, --out, --cell-size, "
               "--facet-size, --facet-distance, --sliver-bound, --seed, "
-              "--min-piece-fraction, --manifold, --skull-out, --skull-gap, --skull-closing or --skull-facet-size");
+              "--min-piece-fraction, --skull-out, --skull-gap, --skull-closing or --skull-facet-size");
         }
       if (image_file.empty())
         throw InputError("",
