@@ -12,7 +12,10 @@
 # OUTPUT_DIR/brain_<level>.msh and OUTPUT_DIR/brain_skull.off (the inner
 # skull surface, 2 mm outside the brain: the CSF layer).
 # The coarse mesh (about the paper's size) is committed to meshes/; the finer
-# ones are made on demand (benchmarks).
+# ones are made on demand (benchmarks), with sulci narrower than about 6 mm
+# closed (--close-sulci 3, CLOSE_SULCI to change): the surfaces of finer
+# meshes otherwise pinch where folds touch, and CSF pressure crushes the
+# cells there (doc/brain.md).
 set -e
 level=${1:-coarse}
 out=${2:-meshes}
@@ -24,6 +27,7 @@ case $level in
   fine)   size="--cell-size 3 --facet-size 4 --facet-distance 0.75" ;;
   *)      size="--cell-size $level --facet-size $level --facet-distance 1" ;;
 esac
+[ "$level" = coarse ] || size="$size --close-sulci ${CLOSE_SULCI:-3}"
 mkdir -p "$out"
 labels=$out/brain_labels.nii.gz
 if [ ! -f "$labels" ]; then

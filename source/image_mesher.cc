@@ -11,6 +11,7 @@
 #include <CGAL/make_mesh_3.h>
 #include <restshape/atomic_file.h>
 #include <restshape/image_mesher.h>
+#include <restshape/image_morphology.h>
 #include <restshape/input_error.h>
 
 #include <algorithm>
@@ -58,49 +59,6 @@ namespace RestShape
     seed_cgal(const unsigned int seed)
     {
       CGAL::get_default_random() = CGAL::Random(seed);
-    }
-
-    /// Squared Euclidean distance transform along one line (Felzenszwalb and
-    /// Huttenlocher 2012), samples @p h apart.
-    void
-    distance_transform_1d(std::vector<double>       &f,
-                          const double               h,
-                          std::vector<unsigned int> &v,
-                          std::vector<double>       &z,
-                          std::vector<double>       &d)
-    {
-      const unsigned int n  = f.size();
-      const double       h2 = h * h;
-      auto intersection     = [&](const unsigned int q, const unsigned int p) {
-        return ((f[q] + h2 * q * q) - (f[p] + h2 * p * p)) /
-               (2 * h2 * (double(q) - double(p)));
-      };
-      unsigned int k = 0;
-      v[0]           = 0;
-      z[0]           = -std::numeric_limits<double>::infinity();
-      z[1]           = std::numeric_limits<double>::infinity();
-      for (unsigned int q = 1; q < n; ++q)
-        {
-          double s = intersection(q, v[k]);
-          while (s <= z[k])
-            {
-              --k;
-              s = intersection(q, v[k]);
-            }
-          ++k;
-          v[k]     = q;
-          z[k]     = s;
-          z[k + 1] = std::numeric_limits<double>::infinity();
-        }
-      k = 0;
-      for (unsigned int q = 0; q < n; ++q)
-        {
-          while (z[k + 1] < q)
-            ++k;
-          const double dq = double(q) - double(v[k]);
-          d[q]            = h2 * dq * dq + f[v[k]];
-        }
-      f = d;
     }
   } // namespace
 
@@ -252,63 +210,19 @@ namespace RestShape
     std::array<unsigned int, 3> n;
     for (unsigned int d = 0; d < 3; ++d)
       n[d] = image.size[d] + 2 * pad;
-    const auto at =
-      [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-        return i + std::size_t(n[0]) * (j + std::size_t(n[1]) * k);
-      };
-    std::vector<bool> region(std::size_t(n[0]) * n[1] * n[2], false);
+    const VoxelGrid   grid{n, h};
+    std::vector<bool> region(grid.size(), false);
     for (unsigned int k = 0; k < image.size[2]; ++k)
       for (unsigned int j = 0; j < image.size[1]; ++j)
         for (unsigned int i = 0; i < image.size[0]; ++i)
           if (image.labels[image.index(i, j, k)] != 0)
-            region[at(i + pad, j + pad, k + pad)] = true;
+            region[grid.at(i + pad, j + pad, k + pad)] = true;
 
-    // Exact Euclidean distance (mm) from every voxel centre to the nearest
-    // centre of a voxel of @p mask: separable transform, axis after axis.
-    const auto distance_to = [&](const std::vector<bool> &mask) {
-      std::vector<double> dist(mask.size());
-      for (std::size_t v = 0; v < mask.size(); ++v)
-        dist[v] = mask[v] ? 0. : 1e20;
-      const unsigned int        n_max = *std::max_element(n.begin(), n.end());
-      std::vector<double>       line, z(n_max + 1), d(n_max);
-      std::vector<unsigned int> v(n_max);
-      for (unsigned int axis = 0; axis < 3; ++axis)
-        {
-          const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
-          for (unsigned int ib = 0; ib < n[b]; ++ib)
-            for (unsigned int ia = 0; ia < n[a]; ++ia)
-              {
-                std::array<unsigned int, 3> ijk;
-                ijk[a] = ia;
-                ijk[b] = ib;
-                line.resize(n[axis]);
-                d.resize(n[axis]);
-                for (ijk[axis] = 0; ijk[axis] < n[axis]; ++ijk[axis])
-                  line[ijk[axis]] = dist[at(ijk[0], ijk[1], ijk[2])];
-                distance_transform_1d(line, h[axis], v, z, d);
-                for (ijk[axis] = 0; ijk[axis] < n[axis]; ++ijk[axis])
-                  dist[at(ijk[0], ijk[1], ijk[2])] = line[ijk[axis]];
-              }
-        }
-      for (double &value : dist)
-        value = std::sqrt(value);
-      return dist;
-    };
-
-    // Morphological closing with a ball of radius `closing`: dilate, then
-    // erode. It bridges sulci and fissures narrower than the ball, as the
-    // inner table of the skull does.
-    if (closing > 0)
-      {
-        const std::vector<double> to_region = distance_to(region);
-        std::vector<bool>         outside(region.size());
-        for (std::size_t v = 0; v < region.size(); ++v)
-          outside[v] = to_region[v] > closing;
-        const std::vector<double> to_outside = distance_to(outside);
-        for (std::size_t v = 0; v < region.size(); ++v)
-          region[v] = region[v] || to_outside[v] > closing;
-      }
-    const std::vector<double> dist = distance_to(region);
+    // Morphological closing with a ball of radius `closing`: it bridges
+    // sulci and fissures narrower than the ball, as the inner table of the
+    // skull does.
+    close_with_ball(region, grid, closing);
+    const std::vector<double> dist = distance_to(region, grid);
 
     // Distance to the boundary of the labelled region (half a voxel beyond
     // the centres of its outer voxels) minus the gap, trilinear, in scaled
@@ -338,7 +252,7 @@ namespace RestShape
               c[dd]            = i0[dd] + upper;
               weight *= upper ? t[dd] : 1 - t[dd];
             }
-          value += weight * dist[at(c[0], c[1], c[2])];
+          value += weight * dist[grid.at(c[0], c[1], c[2])];
         }
       return value - shift;
     };

@@ -22,6 +22,33 @@ namespace RestShape
                                                               {0, 1, 2, 3},
                                                               {4, 5, 6, 7}};
 
+    /// Every face of the cells of @p mesh, as its sorted vertex numbers
+    /// (unused entries the largest number), with the cells that have it and
+    /// the face's number in each of them.
+    std::map<std::array<unsigned int, 4>,
+             std::vector<std::pair<unsigned int, unsigned int>>>
+    faces_of(const MeshDescription &mesh)
+    {
+      std::map<std::array<unsigned int, 4>,
+               std::vector<std::pair<unsigned int, unsigned int>>>
+        faces;
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        {
+          const auto &v     = mesh.cells[c].vertices;
+          const auto &local = v.size() == 4 ? tet_faces : hex_faces;
+          for (unsigned int f = 0; f < local.size(); ++f)
+            {
+              std::array<unsigned int, 4> key;
+              key.fill(static_cast<unsigned int>(-1));
+              for (unsigned int i = 0; i < local[f].size(); ++i)
+                key[i] = v[local[f][i]];
+              std::sort(key.begin(), key.end());
+              faces[key].emplace_back(c, f);
+            }
+        }
+      return faces;
+    }
+
     unsigned int
     root(std::vector<unsigned int> &parent, unsigned int c)
     {
@@ -38,24 +65,9 @@ namespace RestShape
     std::vector<unsigned int> parent(n);
     std::iota(parent.begin(), parent.end(), 0u);
 
-    // Every face, as its sorted vertex numbers (unused entries the largest
-    // number), to the first cell that has it.
-    std::map<std::array<unsigned int, 4>, unsigned int> first_cell;
-    for (unsigned int c = 0; c < n; ++c)
-      {
-        const auto &v = mesh.cells[c].vertices;
-        for (const auto &face : v.size() == 4 ? tet_faces : hex_faces)
-          {
-            std::array<unsigned int, 4> key;
-            key.fill(static_cast<unsigned int>(-1));
-            for (unsigned int i = 0; i < face.size(); ++i)
-              key[i] = v[face[i]];
-            std::sort(key.begin(), key.end());
-            const auto [it, inserted] = first_cell.emplace(key, c);
-            if (!inserted)
-              parent[root(parent, c)] = root(parent, it->second);
-          }
-      }
+    for (const auto &[face, cells] : faces_of(mesh))
+      for (unsigned int i = 1; i < cells.size(); ++i)
+        parent[root(parent, cells[i].first)] = root(parent, cells[0].first);
 
     std::map<unsigned int, unsigned int> size_of_root;
     for (unsigned int c = 0; c < n; ++c)
@@ -120,5 +132,40 @@ namespace RestShape
       }
     mesh = std::move(kept);
     return removed;
+  }
+
+  unsigned int
+  n_pinched_boundary_edges(const MeshDescription &mesh)
+  {
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> n_faces;
+    for (const auto &[face, cells] : faces_of(mesh))
+      if (cells.size() == 1)
+        {
+          // The edges of the face: a triangle's three, or a quadrilateral's
+          // four in deal.II's lexicographic order (0-1, 1-3, 3-2, 2-0).
+          const auto [c, f]           = cells[0];
+          const auto               &v = mesh.cells[c].vertices;
+          std::vector<unsigned int> corners;
+          for (const unsigned int i :
+               (v.size() == 4 ? tet_faces : hex_faces)[f])
+            corners.push_back(v[i]);
+          const std::vector<std::pair<unsigned int, unsigned int>> edges =
+            corners.size() == 3 ?
+              std::vector<std::pair<unsigned int, unsigned int>>{
+                {corners[0], corners[1]},
+                {corners[1], corners[2]},
+                {corners[2], corners[0]}} :
+              std::vector<std::pair<unsigned int, unsigned int>>{
+                {corners[0], corners[1]},
+                {corners[1], corners[3]},
+                {corners[3], corners[2]},
+                {corners[2], corners[0]}};
+          for (auto [a, b] : edges)
+            ++n_faces[{std::min(a, b), std::max(a, b)}];
+        }
+    unsigned int n_pinched = 0;
+    for (const auto &[edge, count] : n_faces)
+      n_pinched += count > 2;
+    return n_pinched;
   }
 } // namespace RestShape

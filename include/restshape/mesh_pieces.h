@@ -2,7 +2,8 @@
 // at a vertex or an edge (as Mesh_3 leaves them where labelled voxels touch
 // diagonally) can rotate about that hinge without resistance, which stops
 // Newton's method on fine brain meshes: the mesher removes them, and
-// LabelledMesh warns about them in meshes from elsewhere.
+// LabelledMesh warns about them in meshes from elsewhere. Pinched boundary
+// edges are the other topological defect of meshes of folded surfaces.
 #ifndef restshape_mesh_pieces_h
 #define restshape_mesh_pieces_h
 
@@ -40,6 +41,16 @@ namespace RestShape
    */
   RemovedPieces
   remove_small_pieces(MeshDescription &mesh, const double fraction);
+
+  /**
+   * The number of pinched boundary edges of @p mesh (tetrahedra or
+   * hexahedra): edges shared by more than two boundary faces, where two
+   * sheets of the surface touch along an edge (a sulcus narrower than the
+   * mesh). Pressure on both sheets, right up to the pinch, crushes the cells
+   * there.
+   */
+  unsigned int
+  n_pinched_boundary_edges(const MeshDescription &mesh);
 } // namespace RestShape
 
 #endif

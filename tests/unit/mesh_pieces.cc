@@ -7,6 +7,9 @@
 //     and labels; with fraction 0.2 it removes nothing.
 //  3. Hexahedra: two sharing a face are one piece, a third sharing only an
 //     edge with them is a piece of its own.
+//  4. Pinched boundary edges: none where cells share faces or only a
+//     vertex; one where two tetrahedra, or two hexahedra, share only an
+//     edge.
 #include <restshape/mesh_pieces.h>
 
 #include "test_utilities.h"
@@ -104,6 +107,22 @@ main()
               0);
   check_below("edge-joined hexahedron on its own - 1",
               std::abs(int(hex_pieces.piece_of_cell[2]) - 1),
+              0);
+
+  check_below("pinched edges of tetrahedra joined by faces or a vertex",
+              n_pinched_boundary_edges(tets),
+              0);
+  MeshDescription edge_joined = tets;
+  edge_joined.cells           = {cell({0, 1, 2, 3}, 1), cell({0, 1, 4, 5}, 1)};
+  check_below("pinched edges of two edge-joined tetrahedra - 1",
+              std::abs(int(n_pinched_boundary_edges(edge_joined)) - 1),
+              0);
+  check_below("pinched edges of hexahedra with an edge-joined one - 1",
+              std::abs(int(n_pinched_boundary_edges(hexes)) - 1),
+              0);
+  hexes.cells.pop_back();
+  check_below("pinched edges of two face-joined hexahedra",
+              n_pinched_boundary_edges(hexes),
               0);
   return exit_code();
 }
