@@ -738,6 +738,7 @@ namespace RestShape
                              " halvings of the load increment at " +
                              format("%.4f", s_done) + " of the full load";
             pcout << "    Newton failed: " << stats.failure << std::endl;
+            stats.fraction = s_done;
             return stats;
           }
         pcout << "    Newton failed (" << stats.failure
@@ -745,6 +746,7 @@ namespace RestShape
         ds /= 2;
       }
     stats.converged = true;
+    stats.fraction  = 1;
     stats.failure.clear();
     return stats;
   }

@@ -154,9 +154,8 @@ namespace RestShape
       parameters.acceleration == InverseParameters::Acceleration::anderson;
     AndersonAccelerator anderson(parameters.anderson_depth);
     VectorType          w = initial_rest, d = forward.zero_vector();
-    d                  = forward.displacement();
-    bool   force_plain = false;
-    double step        = 1; // < 1 after a plain step's forward solve failed
+    d                = forward.displacement();
+    bool force_plain = false;
 
     while (result.iterations < parameters.max_iterations)
       {
@@ -164,10 +163,10 @@ namespace RestShape
         VectorType f = forward.zero_vector();
         f -= d;
         VectorType plain = w;
-        plain.add(step, f);
+        plain += f;
         VectorType candidate   = plain;
         bool       accelerated = false;
-        if (accelerate && step == 1)
+        if (accelerate)
           {
             if (force_plain)
               anderson.reset();
@@ -189,7 +188,7 @@ namespace RestShape
                 candidate   = plain;
                 accelerated = false;
               }
-            for (double beta = 0.5 * step;
+            for (double beta = 0.5;
                  !forward.rest_shape_is_valid(candidate, n_bad);
                  beta /= 2)
               {
@@ -216,30 +215,37 @@ namespace RestShape
         result.newton_iterations += stats.newton_iterations;
         const auto   errors = forward.nodal_norms(forward.displacement());
         const double error  = measure(errors);
-        if (!stats.converged || (accelerated && error > previous))
+        // A plain update whose forward solve failed: the forward solve has
+        // already tried ever smaller fractions of it (its load-step
+        // halvings), so shortening it here would only repeat that work.
+        // Either it reached equilibrium part of the way, and that shorter
+        // update is the new iterate, or the iteration stops at once.
+        bool partial = false;
+        if (!stats.converged && !accelerated)
+          {
+            if (!(stats.fraction > 0))
+              return finish("the forward solve of iteration " +
+                            std::to_string(result.iterations + 1) +
+                            " did not converge even for the smallest "
+                            "fraction of the update: " +
+                            stats.failure);
+            pcout << "  The forward solve reached equilibrium at "
+                  << stats.fraction
+                  << " of the update: that shorter update is taken"
+                  << std::endl;
+            VectorType update = candidate;
+            update -= w;
+            candidate = w;
+            candidate.add(stats.fraction, update);
+            partial     = true;
+            force_plain = true;
+          }
+        else if (!stats.converged || (accelerated && error > previous))
           {
             // Back to the last iterate; the plain update follows.
             forward.set_state(d, w, load);
             if (contact != nullptr)
               contact->set_state(contact_state);
-            if (!accelerated)
-              {
-                // Backtrack: a shorter plain step, at most three times.
-                if (step > 0.2)
-                  {
-                    step /= 2;
-                    pcout << "  The forward solve failed (" << stats.failure
-                          << "): the update is shortened to " << step
-                          << std::endl;
-                    ++result.rejected_steps;
-                    continue;
-                  }
-                return finish(
-                  "the forward solve of iteration " +
-                  std::to_string(result.iterations + 1) +
-                  " did not converge, even with the update shortened to " +
-                  std::to_string(step) + ": " + stats.failure);
-              }
             pcout << "  Anderson step rejected ("
                   << (stats.converged ?
                         "error " + mm(error) + " > " + mm(previous) :
@@ -250,10 +256,10 @@ namespace RestShape
             continue;
           }
 
-        w    = candidate;
-        d    = forward.displacement();
-        step = 1;
+        w = candidate;
+        d = forward.displacement();
         ++result.iterations;
+        result.partial_updates += partial;
         record(result.iterations, stats, accelerated);
         write_output(first_step + result.iterations, result.iterations);
 

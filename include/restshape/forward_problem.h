@@ -54,6 +54,11 @@ namespace RestShape
     double       residual           = 0; // final, N
     double       reference          = 0; // norm of the external loads, N
     std::string  failure;                // why it did not converge
+    /// Fraction of the way from the start to the target load and rest shape
+    /// at which the state is in equilibrium: 1 when converged, less when
+    /// the load-step halvings ran out part of the way (0: not even the
+    /// smallest increment converged).
+    double fraction = 0;
     /// |R|/|f| after every accepted Newton step of the last load step.
     std::vector<double> residual_history;
   };

@@ -32,13 +32,13 @@ namespace RestShape
   struct InverseResult
   {
     bool         converged = false;
-    std::string  reason;                // why it stopped unconverged
-    unsigned int iterations        = 0; // accepted rest-shape updates
-    unsigned int forward_solves    = 0; // including rejected ones
-    unsigned int newton_iterations = 0; // all forward solves
-    unsigned int rejected_steps =
-      0; // rejected Anderson and shortened plain steps
-    double mean_error = 0, max_error = 0; // m
+    std::string  reason;                        // why it stopped unconverged
+    unsigned int iterations        = 0;         // accepted rest-shape updates
+    unsigned int forward_solves    = 0;         // including rejected ones
+    unsigned int newton_iterations = 0;         // all forward solves
+    unsigned int rejected_steps    = 0;         // rejected Anderson steps
+    unsigned int partial_updates   = 0;         // plain updates taken in part
+    double       mean_error = 0, max_error = 0; // m
   };
 
   /**
@@ -53,8 +53,9 @@ namespace RestShape
    * used (an Anderson step falls back to the plain update, a plain update is
    * shortened, at most 6 halvings); an Anderson step that increases the
    * error, or whose forward solve fails, is rejected (the plain update from
-   * the last iterate follows); a plain update whose forward solve fails is
-   * halved, at most three times;
+   * the last iterate follows); when the forward solve of a plain update runs
+   * out of load-step halvings part of the way, the fraction it reached is
+   * taken as the update, and when it reached none the iteration stops;
    * divergence (error above twice the initial one, or growing for three
    * iterations) and stagnation (no 1 % improvement of the best error in 10
    * iterations) stop the iteration with the figures.

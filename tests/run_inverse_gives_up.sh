@@ -1,0 +1,38 @@
+#!/bin/bash
+# The inverse iteration when a forward solve fails (source/inverse_problem.cc):
+# the soft cantilever of prm/cantilever.prm at E = 40 kPa, P1, whose target
+# needs a rest shape beyond the fixed point's reach. Expected: some plain
+# updates are taken in part (the forward solve reached equilibrium part of
+# the way), then a forward solve fails for even the smallest fraction of its
+# update and the iteration stops at once, without shortening the update
+# again: exit code 2, one line on stderr naming the cause, summary.json with
+# "converged": false and no NaN, no rest_shape.msh, and exactly one failed
+# forward solve beyond the accepted iterations and rejected Anderson steps.
+#
+# usage: run_inverse_gives_up.sh RESTSHAPE OUTPUT_DIRECTORY
+set -u
+exe=$1
+out=$2
+rm -rf "$out"
+mkdir -p "$out"
+"$exe" --set "Output/Directory=$out" --set "Discretization/Polynomial degree=1" \
+  --set "Materials/Young's modulus=40000" --set "Solver/Maximum Newton iterations=25" \
+  --set "Inverse problem/Enabled=true" --set "Output/Write VTU=false" \
+  prm/cantilever.prm >"$out.stdout" 2>"$out.stderr"
+code=$?
+fail() { echo "FAIL: $1"; echo "--- exit code $code; stderr:"; cat "$out.stderr"; exit 1; }
+[ "$code" -eq 2 ] || fail "exit code $code, expected 2"
+[ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "expected exactly one line on stderr"
+grep -q "did not converge even for the smallest fraction of the update" "$out.stderr" ||
+  fail "stderr does not name the failed forward solve"
+grep -q "that shorter update is taken" "$out.stdout" || fail "no partial update was taken"
+s=$out/summary.json
+grep -q '"converged": false' "$s" || fail "summary.json does not say converged: false"
+grep -qiE 'nan|inf' "$s" && fail "NaN or infinity in summary.json"
+[ ! -e "$out/rest_shape.msh" ] || fail "rest_shape.msh written for an unconverged iteration"
+n() { grep "\"$1\"" "$s" | sed 's/[^0-9]//g'; }
+solves=$(n forward_solves)
+expected=$(($(n inverse_iterations) + $(n rejected_anderson_steps) + 2))
+echo "forward solves $solves; iteration 0 + accepted + rejected Anderson + 1 failed = $expected"
+[ "$solves" -eq "$expected" ] || fail "the failed update was retried"
+echo "ok: $(cat "$out.stderr")"
