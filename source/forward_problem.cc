@@ -580,11 +580,13 @@ namespace RestShape
                   << contact->progress_text() << std::endl;
           }
 
-        newton_update = 0;
+        newton_update                  = 0;
+        unsigned int linear_iterations = 0;
         {
           TimerOutput::Scope scope(timer, "Linear solve");
-          stats.linear_iterations +=
+          linear_iterations =
             linear_solver->solve(tangent, newton_update, rhs_newton);
+          stats.linear_iterations += linear_iterations;
         }
         constraints_newton.distribute(newton_update);
         ++stats.newton_iterations;
@@ -634,7 +636,7 @@ namespace RestShape
                                         std::string())
               << (parameters.solver.linear_solver == LinearSolverType::cg_amg ?
                     ", " + linear_solver->last_method + " " +
-                      std::to_string(stats.linear_iterations) + " its" :
+                      std::to_string(linear_iterations) + " its" :
                     std::string())
               << (contact != nullptr ? contact->progress_text() : std::string())
               << std::endl;
