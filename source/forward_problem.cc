@@ -531,6 +531,30 @@ namespace RestShape
   // ------------------------------------------------------------------
   // Newton's method with line search, inside load stepping.
 
+  double
+  ForwardProblem::linear_tolerance(const double residual,
+                                   const double previous_residual,
+                                   const double previous_eta,
+                                   const double target) const
+  {
+    const double fixed = parameters.solver.linear_tolerance;
+    if (!parameters.solver.inexact_newton)
+      return fixed;
+    // Eisenstat and Walker (1996), choice 2 with its safeguard.
+    double eta = 0.1;
+    if (previous_residual > 0)
+      {
+        const double ratio = residual / previous_residual;
+        eta                = 0.9 * ratio * ratio;
+        if (0.9 * previous_eta * previous_eta > 0.1)
+          eta = std::max(eta, 0.9 * previous_eta * previous_eta);
+        eta = std::min(eta, 0.1);
+      }
+    // Not tighter than the fixed tolerance; and where the Newton tolerance
+    // is near, only as tight as reaching it needs.
+    return std::max({eta, fixed, std::min(0.1, 0.5 * target / residual)});
+  }
+
   bool
   ForwardProblem::newton(SolveStatistics &stats)
   {
@@ -539,6 +563,8 @@ namespace RestShape
       contact->begin_solve(d_ghost);
 
     double reference = 0;
+    // Inexact Newton: the previous step's residual and linear tolerance.
+    double previous_residual = 0, previous_eta = 0;
     stats.residual_history.clear();
     // adaptive: the consistent tangent, but after a step the line search
     // had to shorten, one step with the projected one.
@@ -582,10 +608,16 @@ namespace RestShape
 
         newton_update                  = 0;
         unsigned int linear_iterations = 0;
+        const double eta               = linear_tolerance(residual,
+                                            previous_residual,
+                                            previous_eta,
+                                            tol * reference);
+        previous_residual              = residual;
+        previous_eta                   = eta;
         {
           TimerOutput::Scope scope(timer, "Linear solve");
           linear_iterations =
-            linear_solver->solve(tangent, newton_update, rhs_newton);
+            linear_solver->solve(tangent, newton_update, rhs_newton, eta);
           stats.linear_iterations += linear_iterations;
         }
         constraints_newton.distribute(newton_update);

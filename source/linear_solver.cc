@@ -32,10 +32,18 @@ namespace RestShape
   }
 
   unsigned int
-  LinearSolver::solve(const MatrixType &A, VectorType &x, const VectorType &b)
+  LinearSolver::solve(const MatrixType &A,
+                      VectorType       &x,
+                      const VectorType &b,
+                      const double      relative_tolerance)
   {
     if (parameters.linear_solver == LinearSolverType::cg_amg)
-      return solve_iteratively(A, x, b);
+      return solve_iteratively(A,
+                               x,
+                               b,
+                               relative_tolerance > 0 ?
+                                 relative_tolerance :
+                                 parameters.linear_tolerance);
 
     solve_directly(A, x, b);
     for (const double v : x)
@@ -92,7 +100,8 @@ namespace RestShape
   unsigned int
   LinearSolver::solve_iteratively(const MatrixType &A,
                                   VectorType       &x,
-                                  const VectorType &b)
+                                  const VectorType &b,
+                                  const double      relative_tolerance)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -118,7 +127,7 @@ namespace RestShape
     TrilinosWrappers::PreconditionAMG amg;
     amg.initialize(A.trilinos_matrix(), list);
 
-    const double  target = parameters.linear_tolerance * b.l2_norm();
+    const double  target = relative_tolerance * b.l2_norm();
     SolverControl control(2000, target);
     try
       {

@@ -337,6 +337,16 @@ namespace RestShape
                       Patterns::Double(0, 1),
                       "Relative residual reduction of the iterative linear "
                       "solver (cg-amg) in every Newton step.");
+    prm.declare_entry("Inexact Newton",
+                      "false",
+                      Patterns::Bool(),
+                      "cg-amg only. true: the linear tolerance of each Newton "
+                      "step follows the residual's progress (Eisenstat and "
+                      "Walker's choice 2: 0.1 at the first step, then "
+                      "0.9 (|R_k|/|R_k-1|)^2, at most 0.1), but never looser "
+                      "than what the Newton tolerance needs nor tighter than "
+                      "Linear solver tolerance. false: Linear solver "
+                      "tolerance in every step.");
     prm.declare_entry("Maximum load step halvings",
                       "10",
                       Patterns::Integer(0, 30),
@@ -364,6 +374,7 @@ namespace RestShape
     newton_tolerance       = prm.get_double("Newton tolerance");
     max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
     linear_tolerance       = prm.get_double("Linear solver tolerance");
+    inexact_newton         = prm.get_bool("Inexact Newton");
     max_load_step_halvings = prm.get_integer("Maximum load step halvings");
     initial_load_steps     = prm.get_integer("Initial load steps");
     prm.leave_subsection();

@@ -247,6 +247,15 @@ namespace RestShape
     /// Newton for the current target load and rest shape.
     bool
     newton(SolveStatistics &stats);
+    /// The relative tolerance of the linear solve of a Newton step with
+    /// residual norm @p residual (Solver/Inexact Newton), given the
+    /// previous step's residual and tolerance (0 at the first step) and
+    /// the residual norm @p target at which Newton stops.
+    double
+    linear_tolerance(const double residual,
+                     const double previous_residual,
+                     const double previous_eta,
+                     const double target) const;
 
     const Parameters           &parameters;
     LabelledMesh               &labelled_mesh;

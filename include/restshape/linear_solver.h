@@ -35,17 +35,25 @@ namespace RestShape
 
     /**
      * Solve A x = b. Returns the number of iterations (1 for the direct
-     * solver). Throws SolverFailure with the figures if it cannot.
+     * solver). The iterative solver reduces the residual by
+     * @p relative_tolerance (0: Solver/Linear solver tolerance). Throws
+     * SolverFailure with the figures if it cannot.
      */
     unsigned int
-    solve(const MatrixType &A, VectorType &x, const VectorType &b);
+    solve(const MatrixType &A,
+          VectorType       &x,
+          const VectorType &b,
+          const double      relative_tolerance = 0);
 
     /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG").
     std::string last_method;
 
   private:
     unsigned int
-    solve_iteratively(const MatrixType &A, VectorType &x, const VectorType &b);
+    solve_iteratively(const MatrixType &A,
+                      VectorType       &x,
+                      const VectorType &b,
+                      const double      relative_tolerance);
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
 

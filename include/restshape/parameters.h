@@ -111,6 +111,7 @@ namespace RestShape
     double           newton_tolerance;
     unsigned int     max_newton_iterations;
     double           linear_tolerance;
+    bool             inexact_newton;
     unsigned int     max_load_step_halvings;
     unsigned int     initial_load_steps;
 
