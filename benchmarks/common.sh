@@ -19,3 +19,7 @@ start_table() {
   done
   printf '\n%s\n%s\n' "$line" "$rule"
 }
+
+# timer_share SECTION LOG: the share of wall time ("35%") of a TimerOutput
+# section in a run's screen output.
+timer_share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }

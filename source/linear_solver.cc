@@ -18,9 +18,11 @@ namespace RestShape
   using namespace dealii;
 
   LinearSolver::LinearSolver(const SolverParameters &parameters,
-                             const unsigned int      degree)
+                             const unsigned int      degree,
+                             TimerOutput            *timer)
     : parameters(parameters)
     , degree(degree)
+    , timer(timer)
   {}
 
   LinearSolver::~LinearSolver() = default;
@@ -97,12 +99,21 @@ namespace RestShape
     direct_solver->Solve();
   }
 
-  unsigned int
-  LinearSolver::solve_iteratively(const MatrixType &A,
-                                  VectorType       &x,
-                                  const VectorType &b,
-                                  const double      relative_tolerance)
+  void
+  LinearSolver::setup_amg(const MatrixType &A)
   {
+    std::unique_ptr<TimerOutput::Scope> scope;
+    if (timer != nullptr)
+      scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
+    if (parameters.reuse_amg_aggregates && amg != nullptr &&
+        amg_matrix == &A.trilinos_matrix())
+      {
+        // Same sparsity pattern, new values: keep the aggregates.
+        amg->reinit();
+        return;
+      }
+
+    amg.reset(); // before its null space goes
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = (degree > 1);
@@ -113,26 +124,37 @@ namespace RestShape
     std::unique_ptr<Epetra_MultiVector> unused;
     data.set_parameters(list, unused, A.trilinos_matrix());
 
-    const Epetra_Map  &map = A.trilinos_matrix().DomainMap();
-    Epetra_MultiVector modes(map, rigid_body_modes.size());
+    const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+    null_space =
+      std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
     for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
       for (int i = 0; i < map.NumMyElements(); ++i)
-        modes[m][i] = rigid_body_modes[m][i];
+        (*null_space)[m][i] = rigid_body_modes[m][i];
     if (!rigid_body_modes.empty())
       {
         list.set("null space: type", "pre-computed");
-        list.set("null space: dimension", modes.NumVectors());
-        list.set("null space: vectors", modes.Values());
+        list.set("null space: dimension", null_space->NumVectors());
+        list.set("null space: vectors", null_space->Values());
       }
-    TrilinosWrappers::PreconditionAMG amg;
-    amg.initialize(A.trilinos_matrix(), list);
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(A.trilinos_matrix(), list);
+    amg_matrix = &A.trilinos_matrix();
+  }
+
+  unsigned int
+  LinearSolver::solve_iteratively(const MatrixType &A,
+                                  VectorType       &x,
+                                  const VectorType &b,
+                                  const double      relative_tolerance)
+  {
+    setup_amg(A);
 
     const double  target = relative_tolerance * b.l2_norm();
     SolverControl control(2000, target);
     try
       {
         SolverCG<VectorType> cg(control);
-        cg.solve(A, x, b, amg);
+        cg.solve(A, x, b, *amg);
         last_method = "CG+AMG";
         return control.last_step();
       }
@@ -147,7 +169,7 @@ namespace RestShape
       {
         SolverGMRES<VectorType> gmres(
           gmres_control, SolverGMRES<VectorType>::AdditionalData(200));
-        gmres.solve(A, x, b, amg);
+        gmres.solve(A, x, b, *amg);
       }
     catch (const SolverControl::NoConvergence &exc)
       {

@@ -347,6 +347,16 @@ namespace RestShape
                       "than what the Newton tolerance needs nor tighter than "
                       "Linear solver tolerance. false: Linear solver "
                       "tolerance in every step.");
+    prm.declare_entry("Reuse AMG aggregates",
+                      "false",
+                      Patterns::Bool(),
+                      "cg-amg only. true: the AMG aggregates (the coarsening "
+                      "pattern) of the first Newton step on a mesh are kept "
+                      "for all later linear solves on that mesh; only the "
+                      "prolongators, coarse matrices and smoothers are "
+                      "recomputed from the new tangent (ML's "
+                      "ReComputePreconditioner). false: a new AMG "
+                      "preconditioner in every Newton step.");
     prm.declare_entry("Maximum load step halvings",
                       "10",
                       Patterns::Integer(0, 30),
@@ -375,6 +385,7 @@ namespace RestShape
     max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
     linear_tolerance       = prm.get_double("Linear solver tolerance");
     inexact_newton         = prm.get_bool("Inexact Newton");
+    reuse_amg_aggregates   = prm.get_bool("Reuse AMG aggregates");
     max_load_step_halvings = prm.get_integer("Maximum load step halvings");
     initial_load_steps     = prm.get_integer("Initial load steps");
     prm.leave_subsection();

@@ -40,7 +40,6 @@ mesh_file() {
   fi
 }
 source "$(dirname "$0")/../common.sh"
-share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }
 
 run() { # name ranks mesh[+refinements] degree inverse
   local dir=$out/$1 ranks=$2 launch=() refinements=0
@@ -56,12 +55,12 @@ run() { # name ranks mesh[+refinements] degree inverse
   local dofs seconds
   dofs=$(value n_dofs "$s")
   seconds=$(value wall_seconds "$s")
-  echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$(($(cat "$dir.rss") / 1024)),$(share Assembly "$dir.log"),$(share 'Linear solve' "$dir.log"),$(share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
+  echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$(($(cat "$dir.rss") / 1024)),$(timer_share Assembly "$dir.log"),$(timer_share 'Linear solve' "$dir.log"),$(timer_share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
   printf '| %s | %s | %s | %.1f | %.2g | %s | %s | %s | %s | %s / %s / %s |\n' "$1" "$ranks" "$dofs" "$seconds" \
     "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$(value newton_iterations "$s")" \
     "$(if [ "$5" = true ]; then echo -; else printf '%.1f' "$(value linear_iterations_per_newton_step "$s")"; fi)" "$(($(cat "$dir.rss") / 1024))" \
-    "$(value inverse_iterations "$s")" "$(share Assembly "$dir.log")" "$(share 'Linear solve' "$dir.log")" \
-    "$(share 'Contact search' "$dir.log")"
+    "$(value inverse_iterations "$s")" "$(timer_share Assembly "$dir.log")" "$(timer_share 'Linear solve' "$dir.log")" \
+    "$(timer_share 'Contact search' "$dir.log")"
 }
 
 echo "machine: $(machine)"

@@ -1,6 +1,8 @@
 // The forward problem: static equilibrium of the co-rotational body under
 // gravity, surface pressure, fixed labels (and contact), by Newton's method
-// with line search and load stepping.
+// with line search and load stepping. Implemented in forward_problem.cc
+// (set-up, state, postprocessing), forward_problem_assembly.cc and
+// forward_problem_newton.cc.
 #ifndef restshape_forward_problem_h
 #define restshape_forward_problem_h
 

@@ -2,6 +2,8 @@
 #ifndef restshape_linear_solver_h
 #define restshape_linear_solver_h
 
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -13,6 +15,7 @@
 
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
+class Epetra_MultiVector;
 
 namespace RestShape
 {
@@ -22,7 +25,11 @@ namespace RestShape
   class LinearSolver
   {
   public:
-    LinearSolver(const SolverParameters &parameters, const unsigned int degree);
+    /// @p timer, if given, gets a section "AMG set-up" (inside the
+    /// caller's "Linear solve").
+    LinearSolver(const SolverParameters &parameters,
+                 const unsigned int      degree,
+                 dealii::TimerOutput    *timer = nullptr);
     ~LinearSolver();
 
     /**
@@ -57,14 +64,28 @@ namespace RestShape
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
 
+    /// Builds the AMG preconditioner for @p A, or, with Solver/Reuse AMG
+    /// aggregates and the same matrix object as before, recomputes it on
+    /// the aggregates of the first build (ML's ReComputePreconditioner).
+    void
+    setup_amg(const MatrixType &A);
+
     /// MUMPS, kept between solves with the same matrix object so that the
     /// symbolic factorisation (METIS ordering) is done once per mesh.
     std::unique_ptr<Epetra_LinearProblem> direct_problem;
     std::unique_ptr<Amesos_BaseSolver>    direct_solver;
     const void                           *factored_matrix = nullptr;
 
+    /// AMG, kept between solves with the same matrix object when
+    /// Solver/Reuse AMG aggregates is set; its null space (the rigid-body
+    /// modes) must outlive it.
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<Epetra_MultiVector>                        null_space;
+    const void *amg_matrix = nullptr;
+
     const SolverParameters           parameters;
     const unsigned int               degree;
+    dealii::TimerOutput             *timer;
     std::vector<std::vector<double>> rigid_body_modes;
   };
 } // namespace RestShape

@@ -112,6 +112,7 @@ namespace RestShape
     unsigned int     max_newton_iterations;
     double           linear_tolerance;
     bool             inexact_newton;
+    bool             reuse_amg_aggregates;
     unsigned int     max_load_step_halvings;
     unsigned int     initial_load_steps;
 

@@ -1,0 +1,282 @@
+// ForwardProblem: Newton's method with line search (and inexact linear
+// tolerances), inside load stepping.
+
+#include <restshape/contact.h>
+#include <restshape/forward_problem.h>
+#include <restshape/input_error.h>
+
+#include <cstdio>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    format(const char *fmt, double a, double b = 0, double c = 0)
+    {
+      char buffer[256];
+      std::snprintf(buffer, sizeof(buffer), fmt, a, b, c);
+      return buffer;
+    }
+  } // namespace
+
+  // ------------------------------------------------------------------
+  // Newton's method with line search, inside load stepping.
+
+  double
+  ForwardProblem::linear_tolerance(const double residual,
+                                   const double previous_residual,
+                                   const double previous_eta,
+                                   const double target) const
+  {
+    const double fixed = parameters.solver.linear_tolerance;
+    if (!parameters.solver.inexact_newton)
+      return fixed;
+    // Eisenstat and Walker (1996), choice 2 with its safeguard.
+    double eta = 0.1;
+    if (previous_residual > 0)
+      {
+        const double ratio = residual / previous_residual;
+        eta                = 0.9 * ratio * ratio;
+        if (0.9 * previous_eta * previous_eta > 0.1)
+          eta = std::max(eta, 0.9 * previous_eta * previous_eta);
+        eta = std::min(eta, 0.1);
+      }
+    // Not tighter than the fixed tolerance; and where the Newton tolerance
+    // is near, only as tight as reaching it needs.
+    return std::max({eta, fixed, std::min(0.1, 0.5 * target / residual)});
+  }
+
+  bool
+  ForwardProblem::newton(SolveStatistics &stats)
+  {
+    const double tol = parameters.solver.newton_tolerance;
+    if (contact != nullptr)
+      contact->begin_solve(d_ghost);
+
+    double reference = 0;
+    // Inexact Newton: the previous step's residual and linear tolerance.
+    double previous_residual = 0, previous_eta = 0;
+    stats.residual_history.clear();
+    // adaptive: the consistent tangent, but after a step the line search
+    // had to shorten, one step with the projected one.
+    const TangentType chosen = parameters.discretization.tangent;
+    tangent_type =
+      chosen == TangentType::adaptive ? TangentType::consistent : chosen;
+    for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
+         ++it)
+      {
+        bool set_changed = false;
+        if (contact != nullptr)
+          {
+            set_changed =
+              contact->update_active_set(d_ghost, residual_raw, it == 1);
+            stats.active_set_changes += set_changed;
+          }
+        make_newton_constraints();
+
+        if (!assemble(Assemble::residual_and_matrix))
+          {
+            stats.failure = "a cell is inverted (det F <= 0) at the start "
+                            "of the Newton step";
+            return false;
+          }
+        const double residual = residual_condensed.l2_norm();
+        if (reference == 0)
+          reference = external_condensed.l2_norm();
+        if (reference == 0)
+          reference = std::max(residual, 1e-300);
+        stats.residual  = residual;
+        stats.reference = reference;
+
+        if (residual <= tol * reference &&
+            (contact == nullptr || (!set_changed && contact->is_satisfied())))
+          {
+            if (contact == nullptr || !contact->thaw_if_adhesive(residual_raw))
+              return true;
+            pcout << "      active nodes pull on the obstacle: released"
+                  << contact->progress_text() << std::endl;
+          }
+
+        newton_update                  = 0;
+        unsigned int linear_iterations = 0;
+        const double eta               = linear_tolerance(residual,
+                                            previous_residual,
+                                            previous_eta,
+                                            tol * reference);
+        previous_residual              = residual;
+        previous_eta                   = eta;
+        {
+          TimerOutput::Scope scope(timer, "Linear solve");
+          linear_iterations =
+            linear_solver->solve(tangent, newton_update, rhs_newton, eta);
+          stats.linear_iterations += linear_iterations;
+        }
+        constraints_newton.distribute(newton_update);
+        ++stats.newton_iterations;
+
+        // Backtracking. Merit: the total potential energy (Armijo), which
+        // the Newton direction descends where the tangent is positive
+        // definite; or, where the energy cannot resolve the change (near
+        // convergence) or the tangent is indefinite, the residual norm. A
+        // step that changes the contact constraints is taken whole (as far
+        // as contact allows: no step carries the body through the
+        // obstacle).
+        const double     energy_start = total_energy;
+        const double     slope        = -(residual_condensed * newton_update);
+        const VectorType d_start      = d;
+        const double     alpha_max =
+          contact != nullptr ? contact->max_step(newton_update) : 1.;
+        double       alpha           = alpha_max;
+        bool         accepted        = false;
+        double       trial_residual  = 0;
+        unsigned int inverted_trials = 0;
+        for (unsigned int ls = 0; ls < 12 && !accepted; ++ls, alpha *= 0.5)
+          {
+            d = d_start;
+            d.add(alpha, newton_update);
+            d_ghost = d;
+            if (!assemble(Assemble::residual))
+              {
+                ++inverted_trials;
+                continue;
+              }
+            trial_residual = residual_condensed.l2_norm();
+            accepted       = (alpha == alpha_max && set_changed) ||
+                       trial_residual <= (1 - 1e-4 * alpha) * residual ||
+                       trial_residual <= tol * reference ||
+                       (slope < 0 &&
+                        total_energy <= energy_start + 1e-4 * alpha * slope);
+            if (accepted)
+              break;
+          }
+        pcout << "      Newton " << std::setw(2) << it
+              << format(": |R|/|f| %9.3e -> %9.3e, step %5.3f",
+                        residual / reference,
+                        (accepted ? trial_residual : residual) / reference,
+                        alpha)
+              << (inverted_trials > 0 ? " (" + std::to_string(inverted_trials) +
+                                          " shorter: a cell inverted)" :
+                                        std::string())
+              << (parameters.solver.linear_solver == LinearSolverType::cg_amg ?
+                    ", " + linear_solver->last_method + " " +
+                      std::to_string(linear_iterations) + " its" :
+                    std::string())
+              << (contact != nullptr ? contact->progress_text() : std::string())
+              << std::endl;
+        if (accepted)
+          {
+            stats.residual_history.push_back(trial_residual / reference);
+            if (chosen == TangentType::adaptive)
+              tangent_type =
+                (tangent_type == TangentType::consistent && alpha < alpha_max) ?
+                  TangentType::projected :
+                  TangentType::consistent;
+          }
+        else if (chosen == TangentType::adaptive &&
+                 tangent_type == TangentType::consistent)
+          {
+            // No step along the consistent direction helps: take the
+            // projected one from the same state.
+            pcout << "      no step along the consistent tangent helps: "
+                     "the projected one from the same state"
+                  << std::endl;
+            d            = d_start;
+            d_ghost      = d;
+            tangent_type = TangentType::projected;
+            continue;
+          }
+        if (!accepted)
+          {
+            d       = d_start;
+            d_ghost = d;
+            stats.failure =
+              format("the line search could not reduce the residual "
+                     "(|R|/|f| = %.3e)",
+                     residual / reference);
+            return false;
+          }
+      }
+    stats.failure =
+      "no convergence in " +
+      std::to_string(parameters.solver.max_newton_iterations) +
+      format(" Newton iterations (|R|/|f| = %.3e, tolerance %.1e)",
+             stats.residual / stats.reference,
+             tol);
+    return false;
+  }
+
+  SolveStatistics
+  ForwardProblem::solve(const LoadState &target_load, const VectorType &rest)
+  {
+    SolveStatistics  stats;
+    const LoadState  start_load  = current_load;
+    const VectorType w_start     = w;
+    VectorType       d_converged = d;
+    double           s_done = 0, ds = 1. / parameters.solver.initial_load_steps;
+    unsigned int     halvings = 0;
+    ContactProblem::State contact_converged;
+    if (contact != nullptr)
+      contact_converged = contact->state();
+
+    while (s_done < 1)
+      {
+        const double s = std::min(1., s_done + ds);
+        current_load.acceleration =
+          start_load.acceleration +
+          s * (target_load.acceleration - start_load.acceleration);
+        current_load.pressure =
+          start_load.pressure +
+          s * (target_load.pressure - start_load.pressure);
+        w = w_start;
+        w.sadd(1 - s, s, rest);
+        w_ghost = w;
+        if (s < 1 || ds < 1)
+          pcout << "    Load step to " << format("%.4f", s) << std::endl;
+
+        if (newton(stats))
+          {
+            s_done      = s;
+            d_converged = d;
+            if (contact != nullptr)
+              contact_converged = contact->state();
+            ++stats.load_steps;
+            ds = std::min(2 * ds, 1.);
+            continue;
+          }
+        // Back to the last equilibrium, smaller increment.
+        d       = d_converged;
+        d_ghost = d;
+        if (contact != nullptr)
+          contact->set_state(contact_converged);
+        if (++halvings > parameters.solver.max_load_step_halvings)
+          {
+            current_load.acceleration =
+              start_load.acceleration +
+              s_done * (target_load.acceleration - start_load.acceleration);
+            current_load.pressure =
+              start_load.pressure +
+              s_done * (target_load.pressure - start_load.pressure);
+            w = w_start;
+            w.sadd(1 - s_done, s_done, rest);
+            w_ghost = w;
+            stats.failure += "; gave up after " + std::to_string(halvings - 1) +
+                             " halvings of the load increment at " +
+                             format("%.4f", s_done) + " of the full load";
+            pcout << "    Newton failed: " << stats.failure << std::endl;
+            stats.fraction = s_done;
+            return stats;
+          }
+        pcout << "    Newton failed (" << stats.failure
+              << "); halving the increment" << std::endl;
+        ds /= 2;
+      }
+    stats.converged = true;
+    stats.fraction  = 1;
+    stats.failure.clear();
+    return stats;
+  }
+
+} // namespace RestShape
