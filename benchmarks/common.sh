@@ -23,3 +23,7 @@ start_table() {
 # timer_share SECTION LOG: the share of wall time ("35%") of a TimerOutput
 # section in a run's screen output.
 timer_share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'; }
+
+# timer_seconds SECTION LOG: the wall seconds of a TimerOutput section in a
+# run's screen output.
+timer_seconds() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/[ s]/, "", $4); print $4 }'; }

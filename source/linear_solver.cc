@@ -13,6 +13,9 @@
 #include <restshape/input_error.h>
 #include <restshape/linear_solver.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace RestShape
 {
   using namespace dealii;
@@ -99,19 +102,28 @@ namespace RestShape
     direct_solver->Solve();
   }
 
-  void
-  LinearSolver::setup_amg(const MatrixType &A)
+  bool
+  LinearSolver::setup_amg(const MatrixType &A, const bool force_rebuild)
   {
     std::unique_ptr<TimerOutput::Scope> scope;
     if (timer != nullptr)
       scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
-    if (parameters.reuse_amg_aggregates && amg != nullptr &&
-        amg_matrix == &A.trilinos_matrix())
-      {
-        // Same sparsity pattern, new values: keep the aggregates.
-        amg->reinit();
-        return;
-      }
+    const bool same_matrix =
+      amg != nullptr && amg_matrix == &A.trilinos_matrix();
+    if (same_matrix && !force_rebuild)
+      switch (parameters.amg_update)
+        {
+          case AmgUpdate::reuse_aggregates:
+            // Same sparsity pattern, new values: keep the aggregates.
+            amg->reinit();
+            return true;
+          case AmgUpdate::lagged:
+            if (!amg_stale)
+              return false;
+            break;
+          case AmgUpdate::rebuild:
+            break;
+        }
 
     amg.reset(); // before its null space goes
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -139,7 +151,22 @@ namespace RestShape
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     amg->initialize(A.trilinos_matrix(), list);
     amg_matrix = &A.trilinos_matrix();
+    amg_stale  = false;
+    return true;
   }
+
+  namespace
+  {
+    /// CG iterations per decade of residual reduction of a finished solve
+    /// (0 if it reduced the residual too little to tell).
+    double
+    iterations_per_decade(const SolverControl &control, const VectorType &b)
+    {
+      const double decades =
+        std::log10(b.l2_norm() / std::max(control.last_value(), 1e-300));
+      return decades > 0.3 ? control.last_step() / decades : 0.;
+    }
+  } // namespace
 
   unsigned int
   LinearSolver::solve_iteratively(const MatrixType &A,
@@ -147,15 +174,47 @@ namespace RestShape
                                   const VectorType &b,
                                   const double      relative_tolerance)
   {
-    setup_amg(A);
+    const double target = relative_tolerance * b.l2_norm();
+    if (setup_amg(A, false))
+      return run_krylov(A, x, b, target);
 
-    const double  target = relative_tolerance * b.l2_norm();
+    // Lagged AMG (an earlier step's): CG with it. If CG has slowed down
+    // by more than 1.5 times, the next solve rebuilds; if CG fails, this
+    // one rebuilds and solves again.
+    SolverControl control(2000, target);
+    try
+      {
+        SolverCG<VectorType> cg(control);
+        cg.solve(A, x, b, *amg);
+        last_method      = "CG+AMG";
+        const double now = iterations_per_decade(control, b);
+        if (amg_iterations_per_decade == 0)
+          amg_iterations_per_decade = now;
+        else if (now > 1.5 * amg_iterations_per_decade)
+          amg_stale = true;
+        return control.last_step();
+      }
+    catch (const SolverControl::NoConvergence &)
+      {}
+    x = 0;
+    setup_amg(A, true);
+    return control.last_step() + run_krylov(A, x, b, target);
+  }
+
+  unsigned int
+  LinearSolver::run_krylov(const MatrixType &A,
+                           VectorType       &x,
+                           const VectorType &b,
+                           const double      target)
+  {
     SolverControl control(2000, target);
     try
       {
         SolverCG<VectorType> cg(control);
         cg.solve(A, x, b, *amg);
         last_method = "CG+AMG";
+        // The standard a lagged AMG is held to.
+        amg_iterations_per_decade = iterations_per_decade(control, b);
         return control.last_step();
       }
     catch (const SolverControl::NoConvergence &)

@@ -4,28 +4,33 @@
 #   fixed    the fixed linear tolerance (1e-8 relative in every Newton step)
 #            and a new AMG preconditioner in every Newton step (the default)
 #   inexact  Solver/Inexact Newton = true (Eisenstat-Walker tolerances)
-#   reuse    Solver/Reuse AMG aggregates = true (aggregates of the first step
-#            kept, the rest of the AMG recomputed)
-#   both     inexact and reuse
+#   reuse    Solver/AMG update = reuse aggregates (the aggregates of the
+#            first step kept, the rest of the AMG recomputed)
+#   lagged   Solver/AMG update = lagged (an earlier step's AMG until CG
+#            slows down)
+#   and combinations joined by '+', e.g. inexact+lagged
 # Reports wall time, Newton steps, CG iterations (total and per step), the
-# share of the AMG set-up (TimerOutput), and the largest and mean
+# seconds of the linear solves and of the AMG set-up within them
+# (TimerOutput), and the largest and mean
 # displacement, which must agree with the first variant's to 1e-6 (all
 # converge to the Newton tolerance). Time ratios are against the first
-# variant of the same mesh.
+# variant of the same mesh, for the whole run and for the linear solves
+# (assembly, the same work in every variant, varies by 10-20 % from run to
+# run on a shared machine: the linear-solve ratio is the sharper one).
 #
 # usage: benchmarks/scaling/solver_options.sh [--coarse]
 #   --coarse: the committed coarse mesh only (the version run in the tests)
 # Environment: RESTSHAPE (build/restshape), OUT
 # (output/benchmarks/solver_options), CASES (default "coarse medium
 # medium+1": meshes of meshes/brain.sh, +N refined N times globally),
-# VARIANTS (default "fixed inexact reuse both"), SET (one extra
+# VARIANTS (default "fixed inexact reuse lagged inexact+lagged"), SET (one extra
 # 'Section/Parameter=value', e.g. 'Contact/Obstacle file=').
 set -u
 exe=${RESTSHAPE:-build/restshape}
 build=$(dirname "$exe")
 out=${OUT:-output/benchmarks/solver_options}
 cases=${CASES:-coarse medium medium+1}
-variants=${VARIANTS:-fixed inexact reuse both}
+variants=${VARIANTS:-fixed inexact reuse lagged inexact+lagged}
 [ "${1:-}" = --coarse ] && cases=coarse
 mkdir -p "$out/meshes"
 source "$(dirname "$0")/../common.sh"
@@ -38,19 +43,23 @@ mesh_file() {
     echo "$out/meshes/brain_$1.msh"
   fi
 }
-options() { # variant -> "inexact reuse"
-  case $1 in
-    fixed) echo "false false" ;;
-    inexact) echo "true false" ;;
-    reuse) echo "false true" ;;
-    both) echo "true true" ;;
-    *) echo "unknown variant '$1' (expected fixed, inexact, reuse or both)" >&2; exit 1 ;;
-  esac
+options() { # variant -> "inexact amg_update"
+  local inexact=false update=rebuild part
+  for part in ${1//+/ }; do
+    case $part in
+      fixed) ;;
+      inexact) inexact=true ;;
+      reuse) update="reuse aggregates" ;;
+      lagged) update=lagged ;;
+      *) echo "unknown variant part '$part' (expected fixed, inexact, reuse or lagged)" >&2; return 1 ;;
+    esac
+  done
+  echo "$inexact $update"
 }
 echo "machine: $(machine)"
 echo
-echo "| mesh | DoFs | variant | seconds | Newton steps | CG iterations | CG per step | AMG set-up share | max / mean displacement (mm) | time / first |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| mesh | DoFs | variant | seconds | Newton steps | CG iterations | CG per step | linear solve / AMG set-up (s) | max / mean displacement (mm) | time / first | linear solve / first |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 status=0
 for c in $cases; do
   level=${c%+*}
@@ -58,15 +67,17 @@ for c in $cases; do
   [[ $c == *+* ]] && refinements=${c##*+}
   mesh=$(mesh_file "$level")
   first_seconds=""
+  first_linear=""
   first_max=""
   for variant in $variants; do
-    read -r inexact reuse <<<"$(options "$variant")" || exit 1
+    opts=$(options "$variant") || exit 1
+    read -r inexact update <<<"$opts"
     dir=$out/${c}_$variant
     rm -rf "$dir"
     if ! "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" --set "Mesh/Global refinements=$refinements" \
       --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
       --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" --set "Solver/Inexact Newton=$inexact" \
-      --set "Solver/Reuse AMG aggregates=$reuse" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
+      --set "Solver/AMG update=$update" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
       echo "| $c | failed ($variant): $(tail -n 1 "$dir.log") |"
       status=1
       continue
@@ -76,11 +87,13 @@ for c in $cases; do
     newton=$(value newton_iterations "$s")
     per_step=$(value linear_iterations_per_newton_step "$s")
     max=$(value max_displacement_mm "$s")
-    [ -z "$first_seconds" ] && { first_seconds=$seconds; first_max=$max; }
-    printf '| %s | %s | %s | %.2f | %s | %.0f | %.1f | %s | %.6f / %.6f | %.2f |\n' "$c" "$(value n_dofs "$s")" \
+    linear=$(timer_seconds 'Linear solve' "$dir.log")
+    [ -z "$first_seconds" ] && { first_seconds=$seconds; first_linear=$linear; first_max=$max; }
+    printf '| %s | %s | %s | %.2f | %s | %.0f | %.1f | %s / %s | %.6f / %.6f | %.2f | %.2f |\n' "$c" "$(value n_dofs "$s")" \
       "$variant" "$seconds" "$newton" "$(awk -v a="$per_step" -v b="$newton" 'BEGIN { print a * b }')" "$per_step" \
-      "$(timer_share 'AMG set-up' "$dir.log")" "$max" "$(value mean_displacement_mm "$s")" \
-      "$(awk -v a="$seconds" -v b="$first_seconds" 'BEGIN { print a / b }')"
+      "$linear" "$(timer_seconds 'AMG set-up' "$dir.log")" "$max" "$(value mean_displacement_mm "$s")" \
+      "$(awk -v a="$seconds" -v b="$first_seconds" 'BEGIN { print a / b }')" \
+      "$(awk -v a="$linear" -v b="$first_linear" 'BEGIN { print a / b }')"
     # All converged to |R|/|f| <= 1e-10: they must agree far below the
     # mesh's resolution.
     awk -v a="$max" -v b="$first_max" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }' ||

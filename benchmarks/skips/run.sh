@@ -19,7 +19,6 @@ inverse=true
 [ "${1:-}" = --coarse ] && inverse=false
 mkdir -p "$out"
 source "$(dirname "$0")/../common.sh"
-section() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/[ s]/, "", $4); print $4 }'; }
 
 echo "machine: $(machine); inverse: $inverse"
 echo
@@ -46,6 +45,6 @@ for variant in full no_vtu no_skull no_pressure; do
   [ -z "$full" ] && full=$seconds
   printf '| %s | %.2f | %.2f | %s | %s |\n' "$variant" "$seconds" \
     "$(awk -v a="$seconds" -v b="$full" 'BEGIN { print a / b }')" \
-    "$(section Output "$dir.log")" "$(section 'Contact search' "$dir.log")"
+    "$(timer_seconds Output "$dir.log")" "$(timer_seconds 'Contact search' "$dir.log")"
 done
 exit $status

@@ -64,11 +64,19 @@ namespace RestShape
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
 
-    /// Builds the AMG preconditioner for @p A, or, with Solver/Reuse AMG
-    /// aggregates and the same matrix object as before, recomputes it on
-    /// the aggregates of the first build (ML's ReComputePreconditioner).
-    void
-    setup_amg(const MatrixType &A);
+    /// Makes the AMG preconditioner for @p A as Solver/AMG update says: a
+    /// new build, a recomputation on the aggregates of the first build, or
+    /// (lagged) the existing one. Returns true if it built or recomputed.
+    bool
+    setup_amg(const MatrixType &A, const bool force_rebuild);
+
+    /// CG (GMRES if CG breaks down) with the current AMG; throws
+    /// SolverControl::NoConvergence if both fail.
+    unsigned int
+    run_krylov(const MatrixType &A,
+               VectorType       &x,
+               const VectorType &b,
+               const double      target);
 
     /// MUMPS, kept between solves with the same matrix object so that the
     /// symbolic factorisation (METIS ordering) is done once per mesh.
@@ -76,12 +84,16 @@ namespace RestShape
     std::unique_ptr<Amesos_BaseSolver>    direct_solver;
     const void                           *factored_matrix = nullptr;
 
-    /// AMG, kept between solves with the same matrix object when
-    /// Solver/Reuse AMG aggregates is set; its null space (the rigid-body
-    /// modes) must outlive it.
+    /// AMG, kept between solves with the same matrix object (the tangent
+    /// of one mesh); its null space (the rigid-body modes) must outlive it.
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
     std::unique_ptr<Epetra_MultiVector>                        null_space;
     const void *amg_matrix = nullptr;
+    /// Lagged AMG: CG iterations per decade of residual reduction in the
+    /// first solve after the last build, and whether the next solve must
+    /// rebuild.
+    double amg_iterations_per_decade = 0;
+    bool   amg_stale                 = false;
 
     const SolverParameters           parameters;
     const unsigned int               degree;

@@ -31,6 +31,14 @@ namespace RestShape
     warped
   };
 
+  /// How the AMG preconditioner follows the tangent (Solver/AMG update).
+  enum class AmgUpdate
+  {
+    rebuild,
+    reuse_aggregates,
+    lagged
+  };
+
   enum class LinearSolverType
   {
     direct,
@@ -112,7 +120,7 @@ namespace RestShape
     unsigned int     max_newton_iterations;
     double           linear_tolerance;
     bool             inexact_newton;
-    bool             reuse_amg_aggregates;
+    AmgUpdate        amg_update;
     unsigned int     max_load_step_halvings;
     unsigned int     initial_load_steps;
 

@@ -1,9 +1,10 @@
 // The two linear solvers reach the same equilibrium: the soft cantilever
 // (large rotations) solved with MUMPS and with CG + ML AMG (rigid-body-mode
 // null space), for P1 tetrahedra and Q1 hexahedra; CG + AMG also with
-// Inexact Newton and with the AMG aggregates of the first Newton step reused
-// in the later ones (the tangent changes a lot between the steps of this
-// large rotation). Prints Newton and linear iteration counts.
+// Inexact Newton, with the AMG aggregates of the first Newton step reused
+// in the later ones, and with a lagged AMG (the tangent changes a lot
+// between the steps of this large rotation). Prints Newton and linear iteration
+// counts.
 #include <deal.II/base/mpi.h>
 
 #include "test_utilities.h"
@@ -49,15 +50,17 @@ main(int argc, char **argv)
                     1,
                     1);
       for (const std::string options :
-           {"",
-            " set Inexact Newton = true\n",
-            " set Reuse AMG aggregates = true\n",
-            " set Inexact Newton = true\n set Reuse AMG aggregates = true\n"})
+           {" set Inexact Newton = false\n set AMG update = rebuild\n",
+            " set Inexact Newton = true\n set AMG update = rebuild\n",
+            " set Inexact Newton = false\n set AMG update = reuse aggregates\n",
+            " set Inexact Newton = false\n set AMG update = lagged\n",
+            " set Inexact Newton = true\n set AMG update = lagged\n"})
         {
           const std::string name =
             cell_type + ", cg-amg" +
-            (options.find("Inexact") != std::string::npos ? " inexact" : "") +
-            (options.find("Reuse") != std::string::npos ? " reuse" : "");
+            (options.find("= true") != std::string::npos ? " inexact" : "") +
+            (options.find("reuse") != std::string::npos ? " reuse" : "") +
+            (options.find("lagged") != std::string::npos ? " lagged" : "");
           SolveStatistics amg_stats;
           VectorType      amg = solve(cell_type, "cg-amg", options, amg_stats);
           std::cout << name << ": Newton iterations "
