@@ -54,8 +54,12 @@ namespace RestShape
     const unsigned int degree = parameters.discretization.degree;
     if (mesh.is_simplex())
       {
-        mapping_         = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
-        cell_quadrature  = QGaussSimplex<3>(degree + 1);
+        mapping_ = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
+        // On the (affine) P1 tetrahedron the gradients, hence F, P and the
+        // tangent, are constant and the body force is linear: the centroid
+        // rule integrates everything exactly, at a quarter of the cost of
+        // the 4-point rule.
+        cell_quadrature  = QGaussSimplex<3>(degree == 1 ? 1 : degree + 1);
         face_quadrature_ = QGaussSimplex<2>(degree + 1);
       }
     else
@@ -109,6 +113,13 @@ namespace RestShape
       v->reinit(owned_dofs, comm);
     d_ghost.reinit(owned_dofs, relevant_dofs, comm);
     w_ghost.reinit(owned_dofs, relevant_dofs, comm);
+    // The buffers copy into the Trilinos vectors entry by entry: both store
+    // the owned entries in the order of their (contiguous) global indices.
+    AssertThrow(owned_dofs.is_contiguous(),
+                ExcMessage("the locally owned DoFs are not contiguous"));
+    for (BufferType *b :
+         {&raw_buffer, &condensed_buffer, &external_buffer, &rhs_buffer})
+      b->reinit(owned_dofs, relevant_dofs, comm);
     current_load = LoadState();
 
     // Pressure and elastic-support faces: the given labels, or every label
