@@ -117,8 +117,12 @@ namespace RestShape
     // the owned entries in the order of their (contiguous) global indices.
     AssertThrow(owned_dofs.is_contiguous(),
                 ExcMessage("the locally owned DoFs are not contiguous"));
-    for (BufferType *b :
-         {&raw_buffer, &condensed_buffer, &external_buffer, &rhs_buffer})
+    for (BufferType *b : {&d_buffer,
+                          &w_buffer,
+                          &raw_buffer,
+                          &condensed_buffer,
+                          &external_buffer,
+                          &rhs_buffer})
       b->reinit(owned_dofs, relevant_dofs, comm);
     current_load = LoadState();
 

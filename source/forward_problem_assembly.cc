@@ -92,8 +92,8 @@ namespace RestShape
     copy.valid = true;
 
     const FEValuesExtractors::Vector u(0);
-    fe_values[u].get_function_gradients(d_ghost, scratch.grad_d);
-    fe_values[u].get_function_gradients(w_ghost, scratch.grad_w);
+    fe_values[u].get_function_gradients(d_buffer, scratch.grad_d);
+    fe_values[u].get_function_gradients(w_buffer, scratch.grad_w);
 
     const Label            label = cell->material_id();
     const CorotationalLaw &law   = material_table.law(label);
@@ -193,8 +193,8 @@ namespace RestShape
           {
             FEFaceValues<3> &fv = scratch.fe_face_values;
             fv.reinit(cell, f);
-            fv[u].get_function_values(d_ghost, scratch.face_d);
-            fv[u].get_function_values(w_ghost, scratch.face_w);
+            fv[u].get_function_values(d_buffer, scratch.face_d);
+            fv[u].get_function_values(w_buffer, scratch.face_w);
             for (const unsigned int q : fv.quadrature_point_indices())
               {
                 const Tensor<1, 3> u_rest =
@@ -218,7 +218,7 @@ namespace RestShape
 
     // Dead loads: their potential is -f_ext . d.
     for (unsigned int i = 0; i < n_dofs; ++i)
-      copy.energy -= copy.cell_external(i) * d_ghost[copy.dofs[i]];
+      copy.energy -= copy.cell_external(i) * d_buffer(copy.dofs[i]);
   }
 
   bool
@@ -226,13 +226,23 @@ namespace RestShape
   {
     TimerOutput::Scope scope(timer, "Assembly");
     const bool         matrix = (what == Assemble::residual_and_matrix);
-    residual_raw              = 0;
-    residual_condensed        = 0;
-    external_condensed        = 0;
+    // The cell vectors go into deal.II's distributed vectors, whose element
+    // access is an index shift: Trilinos's costs a map look-up and state
+    // checks per entry, which made the vector additions as costly as the
+    // matrix ones (profile of the brain forward solve).
+    for (const auto &[v, buffer] :
+         {std::pair(&d, &d_buffer), std::pair(&w, &w_buffer)})
+      {
+        std::copy(v->begin(), v->end(), buffer->begin());
+        buffer->update_ghost_values();
+      }
+    raw_buffer       = 0;
+    condensed_buffer = 0;
+    external_buffer  = 0;
     if (matrix)
       {
         tangent    = 0;
-        rhs_newton = 0;
+        rhs_buffer = 0;
       }
     bool   all_valid = true;
     double energy    = 0;
@@ -254,27 +264,33 @@ namespace RestShape
         energy += c.energy;
         constraints_hanging.distribute_local_to_global(c.cell_rhs,
                                                        c.dofs,
-                                                       residual_raw);
+                                                       raw_buffer);
         constraints_base.distribute_local_to_global(c.cell_external,
                                                     c.dofs,
-                                                    external_condensed);
+                                                    external_buffer);
         constraints_newton.distribute_local_to_global(c.cell_rhs,
                                                       c.dofs,
-                                                      residual_condensed);
+                                                      condensed_buffer);
         if (matrix)
           constraints_newton.distribute_local_to_global(
-            c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_newton);
+            c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_buffer);
       },
       ScratchData(*mapping_, fe_, cell_quadrature, face_quadrature_),
-      CopyData(fe_.n_dofs_per_cell()));
+      CopyData(fe_.n_dofs_per_cell()),
+      2 * MultithreadInfo::n_threads(),
+      64);
 
-    residual_raw.compress(VectorOperation::add);
-    residual_condensed.compress(VectorOperation::add);
-    external_condensed.compress(VectorOperation::add);
+    const auto finish = [](BufferType &buffer, VectorType &v) {
+      buffer.compress(VectorOperation::add);
+      std::copy(buffer.begin(), buffer.end(), v.begin());
+    };
+    finish(raw_buffer, residual_raw);
+    finish(condensed_buffer, residual_condensed);
+    finish(external_buffer, external_condensed);
     if (matrix)
       {
         tangent.compress(VectorOperation::add);
-        rhs_newton.compress(VectorOperation::add);
+        finish(rhs_buffer, rhs_newton);
       }
     total_energy = Utilities::MPI::sum(energy, comm);
     return Utilities::MPI::min(all_valid ? 1 : 0, comm) == 1;

@@ -13,6 +13,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <restshape/linear_solver.h>
 #include <restshape/material.h>
@@ -283,6 +284,12 @@ namespace RestShape
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,
       newton_update;
     VectorType d, d_ghost, w, w_ghost;
+    // The assembly reads d and w from, and adds into, deal.II's distributed
+    // vectors (locally relevant entries, element access by an index shift)
+    // and copies the sums into the Trilinos vectors above.
+    using BufferType = dealii::LinearAlgebra::distributed::Vector<double>;
+    BufferType d_buffer, w_buffer;
+    BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer;
     double     total_energy = 0; // of the last assembly (J)
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
