@@ -1,8 +1,6 @@
 #include <deal.II/base/utilities.h>
-#include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <gmsh.h>
@@ -12,10 +10,12 @@
 #include <restshape/mesh_pieces.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 
 namespace RestShape
@@ -614,15 +614,36 @@ namespace RestShape
                                 const double         coarsen_fraction)
   {
     Assert(!is_simplex(), ExcInternalError());
-    if (auto *distributed =
-          dynamic_cast<parallel::distributed::Triangulation<3> *>(tria.get()))
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        *distributed, indicators, refine_fraction, coarsen_fraction);
-    else
-      GridRefinement::refine_and_coarsen_fixed_number(*tria,
-                                                      indicators,
-                                                      refine_fraction,
-                                                      coarsen_fraction);
+    // The rule of deal.II's serial GridRefinement::
+    // refine_and_coarsen_fixed_number (refine the cells whose indicator is
+    // at least the n-th largest, ties included; coarsen those at most the
+    // m-th smallest), applied to the indicators of all ranks: the marked
+    // cells do not depend on the number of ranks. (p4est's parallel
+    // version finds its thresholds by bisection and breaks ties
+    // differently: on the symmetric column it refined 72 cells where the
+    // serial rule refines 136.)
+    std::vector<float> owned;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned.push_back(indicators[cell->active_cell_index()]);
+    std::vector<float> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(tria->get_communicator(), owned))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end(), std::greater<float>());
+    const auto n_refine =
+      static_cast<std::size_t>(refine_fraction * all.size());
+    const auto n_coarsen =
+      static_cast<std::size_t>(coarsen_fraction * all.size());
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const float value = indicators[cell->active_cell_index()];
+          if (n_refine > 0 && value >= all[n_refine - 1] && value > 0)
+            cell->set_refine_flag();
+          else if (n_coarsen > 0 && value <= all[all.size() - n_coarsen])
+            cell->set_coarsen_flag();
+        }
     tria->execute_coarsening_and_refinement();
   }
 
