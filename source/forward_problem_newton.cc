@@ -49,6 +49,16 @@ namespace RestShape
     return std::max({eta, fixed, std::min(0.1, 0.5 * target / residual)});
   }
 
+  void
+  ForwardProblem::shift_diagonal(const double mu)
+  {
+    // Constrained rows carry only their diagonal; scaling it does not
+    // change the solution there (AffineConstraints::distribute sets it).
+    for (const auto i : owned_dofs)
+      tangent.add(i, i, mu * tangent.diag_element(i));
+    tangent.compress(VectorOperation::add);
+  }
+
   bool
   ForwardProblem::newton(SolveStatistics &stats)
   {
@@ -63,6 +73,11 @@ namespace RestShape
     // adaptive: the consistent tangent, but after a step the line search
     // had to shorten, one step with the projected one.
     const TangentType chosen = parameters.discretization.tangent;
+    // Tangent shift > 0 (adaptive only): Levenberg-Marquardt instead of the
+    // projected step; mu is the current relative diagonal shift.
+    const double mu_start =
+      chosen == TangentType::adaptive ? parameters.solver.tangent_shift : 0.;
+    double mu = 0;
     tangent_type =
       chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
@@ -83,6 +98,8 @@ namespace RestShape
                             "of the Newton step";
             return false;
           }
+        if (mu > 0)
+          shift_diagonal(mu);
         const double residual = residual_condensed.l2_norm();
         if (reference == 0)
           reference = external_condensed.l2_norm();
@@ -165,11 +182,16 @@ namespace RestShape
                       std::to_string(linear_iterations) + " its" :
                     std::string())
               << (contact != nullptr ? contact->progress_text() : std::string())
+              << (mu > 0 ? format(", shift %.0e", mu) : std::string())
               << std::endl;
         if (accepted)
           {
             stats.residual_history.push_back(trial_residual / reference);
-            if (chosen == TangentType::adaptive)
+            if (mu_start > 0)
+              mu = alpha < alpha_max    ? (mu == 0 ? mu_start : 10 * mu) :
+                   mu < 1e-3 * mu_start ? 0 :
+                                          0.1 * mu;
+            else if (chosen == TangentType::adaptive)
               tangent_type =
                 (tangent_type == TangentType::consistent && alpha < alpha_max) ?
                   TangentType::projected :
@@ -180,12 +202,22 @@ namespace RestShape
           {
             // No step along the consistent direction helps: take the
             // projected one from the same state.
-            pcout << "      no step along the consistent tangent helps: "
-                     "the projected one from the same state"
-                  << std::endl;
-            d            = d_start;
-            d_ghost      = d;
-            tangent_type = TangentType::projected;
+            d       = d_start;
+            d_ghost = d;
+            if (mu_start > 0)
+              {
+                mu = mu == 0 ? mu_start : 10 * mu;
+                pcout << "      no step along this tangent helps: the "
+                         "diagonal shift raised, from the same state"
+                      << std::endl;
+              }
+            else
+              {
+                pcout << "      no step along the consistent tangent helps: "
+                         "the projected one from the same state"
+                      << std::endl;
+                tangent_type = TangentType::projected;
+              }
             continue;
           }
         if (!accepted)

@@ -250,6 +250,9 @@ namespace RestShape
     /// Newton for the current target load and rest shape.
     bool
     newton(SolveStatistics &stats);
+    /// Scale the tangent's diagonal by (1 + @p mu) (Solver/Tangent shift).
+    void
+    shift_diagonal(const double mu);
     /// The relative tolerance of the linear solve of a Newton step with
     /// residual norm @p residual (Solver/Inexact Newton), given the
     /// previous step's residual and tolerance (0 at the first step) and

@@ -121,6 +121,7 @@ namespace RestShape
     double           linear_tolerance;
     bool             inexact_newton;
     AmgUpdate        amg_update;
+    double           tangent_shift; // relative; 0: off
     unsigned int     max_load_step_halvings;
     unsigned int     initial_load_steps;
 
