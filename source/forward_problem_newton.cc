@@ -77,7 +77,8 @@ namespace RestShape
     // projected step; mu is the current relative diagonal shift.
     const double mu_start =
       chosen == TangentType::adaptive ? parameters.solver.tangent_shift : 0.;
-    double mu = 0;
+    double     mu    = 0;
+    const auto raise = [&]() { mu = mu == 0 ? mu_start : 10 * mu; };
     tangent_type =
       chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
@@ -188,9 +189,12 @@ namespace RestShape
           {
             stats.residual_history.push_back(trial_residual / reference);
             if (mu_start > 0)
-              mu = alpha < alpha_max    ? (mu == 0 ? mu_start : 10 * mu) :
-                   mu < 1e-3 * mu_start ? 0 :
-                                          0.1 * mu;
+              {
+                if (alpha < alpha_max)
+                  raise();
+                else
+                  mu = mu < 1e-3 * mu_start ? 0 : 0.1 * mu;
+              }
             else if (chosen == TangentType::adaptive)
               tangent_type =
                 (tangent_type == TangentType::consistent && alpha < alpha_max) ?
@@ -200,13 +204,14 @@ namespace RestShape
         else if (chosen == TangentType::adaptive &&
                  tangent_type == TangentType::consistent)
           {
-            // No step along the consistent direction helps: take the
-            // projected one from the same state.
+            // No step along the consistent direction helps: from the same
+            // state, a larger shift (Tangent shift > 0) or the projected
+            // tangent.
             d       = d_start;
             d_ghost = d;
             if (mu_start > 0)
               {
-                mu = mu == 0 ? mu_start : 10 * mu;
+                raise();
                 pcout << "      no step along this tangent helps: the "
                          "diagonal shift raised, from the same state"
                       << std::endl;

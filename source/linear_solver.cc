@@ -182,11 +182,8 @@ namespace RestShape
     // by more than 1.5 times, the next solve rebuilds; if CG fails, this
     // one rebuilds and solves again.
     SolverControl control(2000, target);
-    try
+    if (run_cg(A, x, b, control))
       {
-        SolverCG<VectorType> cg(control);
-        cg.solve(A, x, b, *amg);
-        last_method      = "CG+AMG";
         const double now = iterations_per_decade(control, b);
         if (amg_iterations_per_decade == 0)
           amg_iterations_per_decade = now;
@@ -194,11 +191,28 @@ namespace RestShape
           amg_stale = true;
         return control.last_step();
       }
-    catch (const SolverControl::NoConvergence &)
-      {}
-    x = 0;
     setup_amg(A, true);
     return control.last_step() + run_krylov(A, x, b, target);
+  }
+
+  bool
+  LinearSolver::run_cg(const MatrixType &A,
+                       VectorType       &x,
+                       const VectorType &b,
+                       SolverControl    &control)
+  {
+    try
+      {
+        SolverCG<VectorType> cg(control);
+        cg.solve(A, x, b, *amg);
+        last_method = "CG+AMG";
+        return true;
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        x = 0;
+        return false;
+      }
   }
 
   unsigned int
@@ -208,21 +222,14 @@ namespace RestShape
                            const double      target)
   {
     SolverControl control(2000, target);
-    try
+    if (run_cg(A, x, b, control))
       {
-        SolverCG<VectorType> cg(control);
-        cg.solve(A, x, b, *amg);
-        last_method = "CG+AMG";
         // The standard a lagged AMG is held to.
         amg_iterations_per_decade = iterations_per_decade(control, b);
         return control.last_step();
       }
-    catch (const SolverControl::NoConvergence &)
-      {
-        // The consistent co-rotational tangent can be indefinite at large
-        // strains: GMRES does not need definiteness.
-      }
-    x = 0;
+    // The consistent co-rotational tangent can be indefinite at large
+    // strains: GMRES does not need definiteness.
     SolverControl gmres_control(5000, target);
     try
       {

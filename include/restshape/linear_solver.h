@@ -3,6 +3,7 @@
 #define restshape_linear_solver_h
 
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -69,6 +70,14 @@ namespace RestShape
     /// (lagged) the existing one. Returns true if it built or recomputed.
     bool
     setup_amg(const MatrixType &A, const bool force_rebuild);
+
+    /// CG with the current AMG under @p control; false (and x = 0) if it
+    /// does not converge.
+    bool
+    run_cg(const MatrixType      &A,
+           VectorType            &x,
+           const VectorType      &b,
+           dealii::SolverControl &control);
 
     /// CG (GMRES if CG breaks down) with the current AMG; throws
     /// SolverControl::NoConvergence if both fail.
