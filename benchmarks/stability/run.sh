@@ -19,7 +19,9 @@
 # (inverse iteration 0): far smaller with P1 than with P2 at nu -> 0.5 is
 # the signature of P1's volumetric locking.
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/stability),
-# NU, CONTRAST, GRAVITY, DEGREES, LIMIT. Run from the repository root.
+# NU, CONTRAST, GRAVITY, DEGREES, LIMIT, SET (one extra
+# 'Section/Parameter=value' for every case, e.g. 'Solver/Tangent shift=1e-3').
+# Run from the repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/stability}
@@ -61,7 +63,7 @@ for p in $degrees; do
           --set "Loads/Gravity=0, $gy, 0" \
           --set "Discretization/Polynomial degree=$p" \
           --set "Prestress comparison/Enabled=false" \
-          --set "Output/Write VTU=false" \
+          --set "Output/Write VTU=false" ${SET:+--set "$SET"} \
           prm/brain.prm >"$out/nu${nu}_c${c}_g${g}_p${p}.log" 2>&1
         code=$?
         seconds=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", e - s }')
