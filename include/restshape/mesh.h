@@ -53,6 +53,19 @@ namespace RestShape
   MeshDescription
   refine_tetrahedra(const MeshDescription &tets);
 
+  /**
+   * Reorder a mesh for memory locality: cells grouped by label (in
+   * increasing order, as gmsh reads them back) and, within a label, along a
+   * Hilbert curve through their centroids; vertices in the order the cells
+   * first use them. The
+   * same cells, labels and vertex order within each cell. Mesh generators
+   * (CGAL's among them) write cells in an order close to random, and
+   * deal.II numbers the degrees of freedom in cell order, so every cell's
+   * entries would be scattered over the vectors and the matrix.
+   */
+  void
+  sort_along_hilbert_curve(MeshDescription &mesh);
+
   /// Split every tetrahedron into four hexahedra (labels kept).
   MeshDescription
   split_tetrahedra_into_hexahedra(const MeshDescription &tets);
