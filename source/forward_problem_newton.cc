@@ -302,6 +302,11 @@ namespace RestShape
             stats.failure += "; gave up after " + std::to_string(halvings - 1) +
                              " halvings of the load increment at " +
                              format("%.4f", s_done) + " of the full load";
+            // Measured on the stability matrix (doc/benchmarks.md,
+            // section 4): every case converged with the shift.
+            if (parameters.discretization.tangent == TangentType::adaptive &&
+                parameters.solver.tangent_shift == 0)
+              stats.failure += " (Solver/Tangent shift = 1e-3 may help)";
             pcout << "    Newton failed: " << stats.failure << std::endl;
             stats.fraction = s_done;
             return stats;

@@ -373,7 +373,9 @@ namespace RestShape
       "shortened step, 10 mu after each further one, mu / 10 after each "
       "full step (0 below s / 1000). Measured: the 1.27M-DoF brain with "
       "contact, which stalls near |R|/|f| 1e-4 with 0, converges in 23 "
-      "Newton steps with 1e-3 (doc/benchmarks.md).");
+      "Newton steps with 1e-3, and so does its whole inverse; on the 48 P1 "
+      "stability cases 1e-3 converged in all, 0 in 47, at up to 1.26x the "
+      "Newton steps (doc/benchmarks.md).");
     prm.declare_entry("Maximum load step halvings",
                       "10",
                       Patterns::Integer(0, 30),

@@ -8,6 +8,9 @@
 # again: exit code 2, one line on stderr naming the cause, summary.json with
 # "converged": false and no NaN, no rest_shape.msh, and exactly one failed
 # forward solve beyond the accepted iterations and rejected Anderson steps.
+# Then a forward solve that gives up (2 Newton steps, no load halvings) with
+# the adaptive tangent: its one stderr line suggests Solver/Tangent shift,
+# and does not once the shift is set.
 #
 # usage: run_inverse_gives_up.sh RESTSHAPE OUTPUT_DIRECTORY
 set -u
@@ -36,3 +39,20 @@ expected=$(($(n inverse_iterations) + $(n rejected_anderson_steps) + 2))
 echo "forward solves $solves; iteration 0 + accepted + rejected Anderson + 1 failed = $expected"
 [ "$solves" -eq "$expected" ] || fail "the failed update was retried"
 echo "ok: $(cat "$out.stderr")"
+
+hint="Solver/Tangent shift = 1e-3 may help"
+for shift in 0 1e-3; do
+  "$exe" --set "Output/Directory=$out/forward_$shift" --set "Discretization/Tangent=adaptive" \
+    --set "Solver/Tangent shift=$shift" --set "Solver/Maximum Newton iterations=2" \
+    --set "Solver/Maximum load step halvings=0" --set "Output/Write VTU=false" \
+    prm/cantilever.prm >"$out.forward.stdout" 2>"$out.stderr"
+  code=$?
+  [ "$code" -eq 2 ] || fail "adaptive tangent, shift $shift: exit code $code, expected 2"
+  [ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "adaptive tangent, shift $shift: expected one line on stderr"
+  if [ "$shift" = 0 ]; then
+    grep -qF "$hint" "$out.stderr" || fail "no shift: the message does not suggest the tangent shift"
+  else
+    grep -qF "$hint" "$out.stderr" && fail "shift set: the message still suggests it"
+  fi
+done
+echo "ok: the forward solve's message suggests the tangent shift only when it is off"
