@@ -71,17 +71,42 @@ namespace RestShape
           }
       return dets;
     }
-
-    Point<3>
-    centroid(const std::vector<Point<3>>     &v,
-             const std::vector<unsigned int> &indices)
-    {
-      Point<3> c;
-      for (const unsigned int i : indices)
-        c += v[i];
-      return c / static_cast<double>(indices.size());
-    }
   } // namespace
+
+  Point<3>
+  centroid(const std::vector<Point<3>>     &v,
+           const std::vector<unsigned int> &indices)
+  {
+    Point<3> c;
+    for (const unsigned int i : indices)
+      c += v[i];
+    return c / static_cast<double>(indices.size());
+  }
+
+  MeshDescription
+  select_cells(const MeshDescription           &mesh,
+               const std::vector<unsigned int> &cells)
+  {
+    MeshDescription result;
+    result.cells.reserve(cells.size());
+    const unsigned int        unused = numbers::invalid_unsigned_int;
+    std::vector<unsigned int> new_index(mesh.vertices.size(), unused);
+    for (const unsigned int c : cells)
+      {
+        CellData<3> cell = mesh.cells[c];
+        for (unsigned int &v : cell.vertices)
+          {
+            if (new_index[v] == unused)
+              {
+                new_index[v] = result.vertices.size();
+                result.vertices.push_back(mesh.vertices[v]);
+              }
+            v = new_index[v];
+          }
+        result.cells.push_back(cell);
+      }
+    return result;
+  }
 
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit)
@@ -211,19 +236,9 @@ namespace RestShape
                          "only one cell type");
 
     // Drop vertices that no cell uses (e.g. of boundary-only entities).
-    std::vector<int>      new_index(result.vertices.size(), -1);
-    std::vector<Point<3>> used;
-    for (auto &cell : result.cells)
-      for (auto &v : cell.vertices)
-        {
-          if (new_index[v] < 0)
-            {
-              new_index[v] = used.size();
-              used.push_back(result.vertices[v]);
-            }
-          v = new_index[v];
-        }
-    result.vertices = std::move(used);
+    std::vector<unsigned int> all(result.cells.size());
+    std::iota(all.begin(), all.end(), 0u);
+    result = select_cells(result, all);
     return result;
   }
 
@@ -455,25 +470,7 @@ namespace RestShape
                        return la < lb || (la == lb && key[a] < key[b]);
                      });
 
-    MeshDescription sorted;
-    sorted.cells.reserve(mesh.cells.size());
-    const unsigned int        unused = numbers::invalid_unsigned_int;
-    std::vector<unsigned int> new_index(mesh.vertices.size(), unused);
-    for (const unsigned int c : order)
-      {
-        CellData<3> cell = mesh.cells[c];
-        for (unsigned int &v : cell.vertices)
-          {
-            if (new_index[v] == unused)
-              {
-                new_index[v] = sorted.vertices.size();
-                sorted.vertices.push_back(mesh.vertices[v]);
-              }
-            v = new_index[v];
-          }
-        sorted.cells.push_back(cell);
-      }
-    mesh = std::move(sorted);
+    mesh = select_cells(mesh, order);
   }
 
   void

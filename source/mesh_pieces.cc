@@ -108,29 +108,12 @@ namespace RestShape
     if (removed.n_pieces == 0)
       return removed;
 
-    MeshDescription           kept;
-    std::vector<unsigned int> new_index(mesh.vertices.size(),
-                                        static_cast<unsigned int>(-1));
+    std::vector<unsigned int> kept;
     for (unsigned int c = 0; c < mesh.cells.size(); ++c)
-      {
-        if (!keep[pieces.piece_of_cell[c]])
-          {
-            ++removed.n_cells;
-            continue;
-          }
-        dealii::CellData<3> cell = mesh.cells[c];
-        for (auto &v : cell.vertices)
-          {
-            if (new_index[v] == static_cast<unsigned int>(-1))
-              {
-                new_index[v] = kept.vertices.size();
-                kept.vertices.push_back(mesh.vertices[v]);
-              }
-            v = new_index[v];
-          }
-        kept.cells.push_back(cell);
-      }
-    mesh = std::move(kept);
+      if (keep[pieces.piece_of_cell[c]])
+        kept.push_back(c);
+    removed.n_cells = mesh.cells.size() - kept.size();
+    mesh            = select_cells(mesh, kept);
     return removed;
   }
 

@@ -53,12 +53,26 @@ namespace RestShape
   MeshDescription
   refine_tetrahedra(const MeshDescription &tets);
 
+  /// The centroid of the vertices @p indices of @p vertices.
+  dealii::Point<3>
+  centroid(const std::vector<dealii::Point<3>> &vertices,
+           const std::vector<unsigned int>     &indices);
+
+  /**
+   * The cells @p cells of @p mesh, in that order, with the vertices they
+   * use, renumbered in the order of first use (vertices no cell uses are
+   * dropped).
+   */
+  MeshDescription
+  select_cells(const MeshDescription           &mesh,
+               const std::vector<unsigned int> &cells);
+
   /**
    * Reorder a mesh for memory locality: cells grouped by label (in
    * increasing order, as gmsh reads them back) and, within a label, along a
    * Hilbert curve through their centroids; vertices in the order the cells
-   * first use them. The
-   * same cells, labels and vertex order within each cell. Mesh generators
+   * first use them. The same cells, labels and vertex order within each
+   * cell. Mesh generators
    * (CGAL's among them) write cells in an order close to random, and
    * deal.II numbers the degrees of freedom in cell order, so every cell's
    * entries would be scattered over the vectors and the matrix.

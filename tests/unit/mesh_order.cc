@@ -40,15 +40,6 @@ namespace
     return keys;
   }
 
-  Point<3>
-  centroid(const MeshDescription &mesh, const CellData<3> &cell)
-  {
-    Point<3> c;
-    for (const unsigned int v : cell.vertices)
-      c += mesh.vertices[v];
-    return c / 4.;
-  }
-
   /// Mean distance between consecutive cells' centroids / mean edge length.
   double
   consecutive_distance(const MeshDescription &mesh)
@@ -59,8 +50,9 @@ namespace
         const auto &v = mesh.cells[c].vertices;
         edge += mesh.vertices[v[0]].distance(mesh.vertices[v[1]]);
         if (c > 0)
-          distance += centroid(mesh, mesh.cells[c])
-                        .distance(centroid(mesh, mesh.cells[c - 1]));
+          distance +=
+            centroid(mesh.vertices, mesh.cells[c].vertices)
+              .distance(centroid(mesh.vertices, mesh.cells[c - 1].vertices));
       }
     return (distance / (mesh.cells.size() - 1)) / (edge / mesh.cells.size());
   }
