@@ -81,8 +81,11 @@ namespace RestShape
     const auto raise = [&]() { mu = mu == 0 ? mu_start : 10 * mu; };
     tangent_type =
       chosen == TangentType::adaptive ? TangentType::consistent : chosen;
-    for (unsigned int it = 1; it <= parameters.solver.max_newton_iterations;
-         ++it)
+    // The last pass only checks convergence: the state the last allowed
+    // step reached counts (it used to be thrown away at the cap even when
+    // it met the tolerance).
+    const unsigned int max_steps = parameters.solver.max_newton_iterations;
+    for (unsigned int it = 1; it <= max_steps + 1; ++it)
       {
         bool set_changed = false;
         if (contact != nullptr)
@@ -117,6 +120,8 @@ namespace RestShape
             pcout << "      active nodes pull on the obstacle: released"
                   << contact->progress_text() << std::endl;
           }
+        if (it > max_steps)
+          break;
 
         newton_update                  = 0;
         unsigned int linear_iterations = 0;
@@ -237,11 +242,13 @@ namespace RestShape
           }
       }
     stats.failure =
-      "no convergence in " +
-      std::to_string(parameters.solver.max_newton_iterations) +
+      "no convergence in " + std::to_string(max_steps) +
       format(" Newton iterations (|R|/|f| = %.3e, tolerance %.1e)",
              stats.residual / stats.reference,
              tol);
+    if (contact != nullptr && stats.residual <= tol * stats.reference)
+      stats.failure +=
+        ": the residual meets the tolerance but " + contact->unsettled_text();
     return false;
   }
 

@@ -1,3 +1,4 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -10,15 +11,34 @@
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <dlfcn.h>
 #include <restshape/input_error.h>
 #include <restshape/linear_solver.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace RestShape
 {
   using namespace dealii;
+
+  unsigned int
+  match_blas_threads_to_deal_ii()
+  {
+    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr)
+      return 0;
+    // Looked up at run time: OpenBLAS comes in through deal.II's and
+    // MUMPS's dependencies (Debian's BLAS alternative), not our link line.
+    using SetThreads = void (*)(int);
+    const auto set   = reinterpret_cast<SetThreads>(
+      dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (set == nullptr)
+      return 0;
+    const unsigned int n = MultithreadInfo::n_threads();
+    set(static_cast<int>(n));
+    return n;
+  }
 
   LinearSolver::LinearSolver(const SolverParameters &parameters,
                              const unsigned int      degree,

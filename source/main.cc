@@ -11,6 +11,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/input_error.h>
+#include <restshape/linear_solver.h>
 #include <restshape/parameters.h>
 #include <restshape/simulator.h>
 
@@ -63,9 +64,10 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc,
                                        argv,
                                        numbers::invalid_unsigned_int);
-  const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
-  std::string prm_file;
+  match_blas_threads_to_deal_ii();
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+  std::string    prm_file;
 
   try
     {

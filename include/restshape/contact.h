@@ -104,6 +104,14 @@ namespace RestShape
     bool
     is_satisfied() const;
 
+    /// Why the contact conditions are not met at the state of the last
+    /// update (nodes through the obstacle, active nodes off it, the largest
+    /// violation in mm, nodes the last update added or released), for the
+    /// message of a Newton solve whose residual met the tolerance when it
+    /// ran out of iterations.
+    std::string
+    unsettled_text() const;
+
     /// ", contact N active (+a -r)" for the Newton progress line.
     std::string
     progress_text() const;

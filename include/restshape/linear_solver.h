@@ -20,6 +20,18 @@ class Epetra_MultiVector;
 
 namespace RestShape
 {
+  /**
+   * OpenBLAS (which MUMPS factorises with) starts one thread per core of its
+   * own, whatever DEAL_II_NUM_THREADS or the number of MPI ranks on a node
+   * say. Sets OpenBLAS's thread count to deal.II's
+   * (MultithreadInfo::n_threads(), which MPI_InitFinalize splits among the
+   * ranks of a node), unless OPENBLAS_NUM_THREADS is set. Returns the
+   * count set, 0 if it left OpenBLAS alone (variable set, or no OpenBLAS
+   * loaded).
+   */
+  unsigned int
+  match_blas_threads_to_deal_ii();
+
   using VectorType = dealii::TrilinosWrappers::MPI::Vector;
   using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
 

@@ -5,7 +5,10 @@
 // needs more iterations. The projected tangent (negative eigenvalues of
 // compressed points removed) and the adaptive one (consistent, projected
 // after a shortened step) reach the same equilibrium; adaptive keeps the
-// quadratic order at the end. All counts are printed for the record.
+// quadratic order at the end. A cap on the Newton iterations equal to the
+// count the consistent tangent needs still converges (the state the last
+// allowed step reaches is checked), one less does not. All counts are
+// printed for the record.
 #include <deal.II/base/mpi.h>
 
 #include "test_utilities.h"
@@ -23,7 +26,8 @@ namespace
   };
 
   Result
-  solve(const std::string &tangent)
+  solve(const std::string &tangent,
+        const std::string &solver = " set Maximum Newton iterations = 200\n")
   {
     Scene s(
       "subsection Mesh\n set File = meshes/cantilever_tet.msh\nend\n"
@@ -32,7 +36,8 @@ namespace
       "\nend\nsubsection Materials\n set Young's modulus = 100000\n"
       " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
       "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
-      "subsection Solver\n set Maximum Newton iterations = 200\nend\n");
+      "subsection Solver\n" +
+      solver + "end\n");
     ForwardProblem &f = *s.forward;
     Result          r;
     r.stats  = f.solve(f.scene_load(), f.zero_vector());
@@ -100,5 +105,27 @@ main(int argc, char **argv)
                 order(adaptive.stats.residual_history),
                 1.8,
                 100);
+
+  const auto capped = [&](const unsigned int cap) {
+    return solve("consistent",
+                 " set Maximum Newton iterations = " + std::to_string(cap) +
+                   "\n set Maximum load step halvings = 0\n");
+  };
+  const unsigned int n        = consistent.stats.newton_iterations;
+  const Result       at_cap   = capped(n);
+  const Result       over_cap = capped(n - 1);
+  std::cout << "cap " << n << ": converged " << at_cap.stats.converged
+            << "; cap " << n - 1 << ": " << over_cap.stats.failure << std::endl;
+  check_between("cap = the count needed: converged",
+                at_cap.stats.converged,
+                1,
+                1);
+  check_below("cap = the count needed: same equilibrium (tip difference, mm)",
+              std::abs(consistent.tip_mm - at_cap.tip_mm),
+              1e-9);
+  check_between("cap = one less: not converged",
+                over_cap.stats.converged,
+                0,
+                0);
   return exit_code();
 }
