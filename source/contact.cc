@@ -413,45 +413,45 @@ namespace RestShape
       }
   }
 
+  ContactProblem::Violations
+  ContactProblem::violations() const
+  {
+    Violations v;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.eligible)
+        {
+          if (c.gap < -gap_tolerance)
+            ++v.through;
+          else if (c.active && std::abs(c.gap) > gap_tolerance)
+            ++v.off;
+          else
+            continue;
+          v.worst = std::max(v.worst, std::abs(c.gap));
+        }
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
+    v.through = Utilities::MPI::sum(v.through, comm);
+    v.off     = Utilities::MPI::sum(v.off, comm);
+    v.worst   = Utilities::MPI::max(v.worst, comm);
+    return v;
+  }
+
   bool
   ContactProblem::is_satisfied() const
   {
-    bool ok = true;
-    for (const Candidate &c : candidates)
-      if (c.owned && c.eligible)
-        ok = ok && c.gap >= -gap_tolerance &&
-             (!c.active || std::abs(c.gap) <= gap_tolerance);
-    return Utilities::MPI::min(
-             ok ? 1 : 0,
-             forward.dof_handler().get_triangulation().get_communicator()) == 1;
+    const Violations v = violations();
+    return v.through + v.off == 0;
   }
 
   std::string
   ContactProblem::unsettled_text() const
   {
-    unsigned int through = 0, off = 0;
-    double       worst = 0;
-    for (const Candidate &c : candidates)
-      if (c.owned && c.eligible)
-        {
-          if (c.gap < -gap_tolerance)
-            ++through;
-          else if (c.active && std::abs(c.gap) > gap_tolerance)
-            ++off;
-          else
-            continue;
-          worst = std::max(worst, std::abs(c.gap));
-        }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
-    through = Utilities::MPI::sum(through, comm);
-    off     = Utilities::MPI::sum(off, comm);
-    worst   = Utilities::MPI::max(worst, comm);
-    char buffer[128];
-    std::snprintf(buffer, sizeof(buffer), "%.2e", worst * 1e3);
-    return "the contact conditions do not settle: " + std::to_string(through) +
-           " nodes through the obstacle, " + std::to_string(off) +
-           " active nodes off it (by up to " + buffer +
+    const Violations v = violations();
+    char             buffer[128];
+    std::snprintf(buffer, sizeof(buffer), "%.2e", v.worst * 1e3);
+    return "the contact conditions do not settle: " +
+           std::to_string(v.through) + " nodes through the obstacle, " +
+           std::to_string(v.off) + " active nodes off it (by up to " + buffer +
            " mm); the last update made " + std::to_string(n_added) +
            " nodes active and released " + std::to_string(n_released);
   }

@@ -171,6 +171,17 @@ namespace RestShape
       dealii::Point<3>     previous_position;
     };
 
+    /// Violated contact conditions over all ranks, at the state of the
+    /// last update: eligible nodes beyond the obstacle, active nodes off
+    /// it (|gap| > g_tol), and the largest |gap| among them (m).
+    struct Violations
+    {
+      unsigned int through = 0, off = 0;
+      double       worst = 0;
+    };
+    Violations
+    violations() const;
+
     dealii::Point<3>
     position(const Candidate &c, const VectorType &d) const;
     double

@@ -72,10 +72,9 @@ namespace RestShape
    * increasing order, as gmsh reads them back) and, within a label, along a
    * Hilbert curve through their centroids; vertices in the order the cells
    * first use them. The same cells, labels and vertex order within each
-   * cell. Mesh generators
-   * (CGAL's among them) write cells in an order close to random, and
-   * deal.II numbers the degrees of freedom in cell order, so every cell's
-   * entries would be scattered over the vectors and the matrix.
+   * cell. Mesh generators (CGAL's among them) write cells in an order close
+   * to random, and deal.II numbers the degrees of freedom in cell order, so
+   * every cell's entries would be scattered over the vectors and the matrix.
    */
   void
   sort_along_hilbert_curve(MeshDescription &mesh);
