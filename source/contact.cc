@@ -1,8 +1,11 @@
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <restshape/contact.h>
 #include <restshape/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -151,11 +154,38 @@ namespace RestShape
   ContactProblem::contact_force(const Candidate  &c,
                                 const VectorType &raw_residual) const
   {
-    // At equilibrium f_ext - f_int + lambda n = 0 at the node.
-    double lambda = 0;
+    return reaction(c, raw_residual) * c.normal;
+  }
+
+  Tensor<1, 3>
+  ContactProblem::reaction(const Candidate     &c,
+                           const VectorType    &raw_residual,
+                           std::vector<double> *multipliers) const
+  {
+    // At equilibrium f_ext - f_int + sum_i lambda_i n_i = 0 at the node:
+    // lambda = -r . n on one plane, least squares over held planes.
+    Tensor<1, 3> r;
     for (unsigned int k = 0; k < 3; ++k)
-      lambda -= raw_residual[c.node.dofs[k]] * c.normal[k];
-    return lambda;
+      r[k] = -raw_residual[c.node.dofs[k]];
+    if (c.held.empty())
+      return (r * c.normal) * c.normal;
+    const unsigned int m = c.held.size();
+    FullMatrix<double> gram(m, m);
+    Vector<double>     rhs(m), lambda(m);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        rhs[i] = c.held[i].normal * r;
+        for (unsigned int j = 0; j < m; ++j)
+          gram(i, j) = c.held[i].normal * c.held[j].normal;
+      }
+    gram.gauss_jordan();
+    gram.vmult(lambda, rhs);
+    Tensor<1, 3> force;
+    for (unsigned int i = 0; i < m; ++i)
+      force += lambda[i] * c.held[i].normal;
+    if (multipliers != nullptr)
+      multipliers->assign(lambda.begin(), lambda.end());
+    return force;
   }
 
   void
@@ -166,11 +196,16 @@ namespace RestShape
     const MPI_Comm comm =
       forward.dof_handler().get_triangulation().get_communicator();
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
-      return;
+      {
+        for (Candidate &c : candidates)
+          c.dropped = 0;
+        return;
+      }
     VectorType flags(forward.locally_owned_dofs(), comm);
     for (const Candidate &c : candidates)
       if (c.owned)
-        flags[c.node.dofs[0]] = (c.active ? 1 : 0) + (c.eligible ? 2 : 0);
+        flags[c.node.dofs[0]] =
+          (c.active ? 1 : 0) + (c.eligible ? 2 : 0) + 4 * c.dropped;
     flags.compress(VectorOperation::insert);
     VectorType ghosted(forward.locally_owned_dofs(),
                        forward.locally_relevant_dofs(),
@@ -182,7 +217,21 @@ namespace RestShape
           const int f = static_cast<int>(std::lround(ghosted[c.node.dofs[0]]));
           c.active    = (f & 1) != 0;
           c.eligible  = (f & 2) != 0;
+          // Held planes its owner let go (thaw_if_adhesive()).
+          drop_planes(c, f / 4);
         }
+    for (Candidate &c : candidates)
+      c.dropped = 0;
+  }
+
+  void
+  ContactProblem::drop_planes(Candidate &c, const unsigned int mask)
+  {
+    for (int i = int(c.held.size()) - 1; i >= 0; --i)
+      if (mask & (1u << i))
+        c.held.erase(c.held.begin() + i);
+    if (mask != 0 && !c.held.empty())
+      set_normal_from_held(c);
   }
 
   void
@@ -202,11 +251,13 @@ namespace RestShape
         c.previous_position = x;
         // Warm start: the active set of the last solve, for nodes that are
         // on the allowed side and within a cell size of the obstacle now.
-        c.eligible       = g.gap >= -gap_tolerance;
-        c.active         = c.active && c.eligible && g.gap < h_min;
-        c.pulled         = false;
-        c.normal_locked  = false;
-        c.normal_changes = 0;
+        c.eligible = g.gap >= -gap_tolerance;
+        c.active   = c.active && c.eligible && g.gap < h_min;
+        c.pulled   = false;
+        c.face     = Plane();
+        c.locked   = false;
+        c.left.clear();
+        c.held.clear();
       }
     share_flags();
   }
@@ -252,25 +303,18 @@ namespace RestShape
         const Gap      g = obstacle->gap(x);
         c.gap            = g.gap;
         // While releases are frozen (the active set only grows) an active
-        // node takes the exact gradient of the gap as its normal, so Newton
-        // converges quadratically while it stays on one face. A node that
-        // keeps changing face (a crease or corner of the triangulated
-        // surface: 2- and 3-cycles were seen on the brain) gets the smoothed
-        // normal after its third change, fixed for the rest of the solve.
-        // Otherwise, and for inactive nodes, the smoothed normal.
-        if (!(releases_frozen && c.active))
-          c.normal = g.normal;
-        else if (!c.normal_locked)
+        // node follows the closest face, or holds the planes of a crease;
+        // otherwise, and for inactive nodes, the smoothed normal.
+        if (releases_frozen && c.active)
+          update_held_planes(c, x, g);
+        else
           {
-            if ((g.gradient - c.normal).norm() > 1e-6)
-              ++c.normal_changes;
-            c.normal = g.gradient;
-            if (c.normal_changes > 3)
-              {
-                c.normal        = g.normal;
-                c.normal_locked = true;
-              }
+            c.normal = g.normal;
+            c.locked = false;
+            c.left.clear();
+            c.held.clear();
           }
+        c.face = Plane{g.gradient, x - g.gap * g.gradient, g.gap};
         if (c.owned && !c.eligible &&
             (g.gap >= -gap_tolerance ||
              obstacle->n_crossings(c.previous_position, x) >= 2))
@@ -322,6 +366,108 @@ namespace RestShape
     return changed;
   }
 
+  void
+  ContactProblem::update_held_planes(Candidate      &c,
+                                     const Point<3> &x,
+                                     const Gap      &g)
+  {
+    // An active node takes the exact gradient of the gap as its normal, so
+    // Newton converges quadratically while it stays on one face. A node
+    // that comes back to a face it has left rests in a crease of the
+    // triangulated surface, where the closest face alternates (2- and
+    // 3-cycles; at heavy load most contact nodes of the brain). It then
+    // holds the planes of both faces at once, so it slides along the
+    // crease, and its constraints are linear: quadratic convergence again.
+    // (A smoothed normal fixed for the rest of the solve, used before,
+    // converged linearly, by 0.8 per step.) A held node that goes through a
+    // third face holds that one too (a corner). Held planes that pull on
+    // the node (negative multiplier) are let go by thaw_if_adhesive(), like
+    // pulling nodes: letting them go at once made the planes of a node come
+    // and go in a 2-cycle.
+    const auto same = [](const Tensor<1, 3> &a, const Tensor<1, 3> &b) {
+      return (a - b).norm() <= 1e-6;
+    };
+    const double crease_sine = std::sin(10 * M_PI / 180);
+    if (c.locked)
+      return;
+    const Plane current{g.gradient, x - g.gap * g.gradient, g.gap};
+    if (c.held.empty())
+      {
+        if (c.face.normal.norm() > 0 && !same(g.gradient, c.face.normal))
+          {
+            const bool back =
+              std::any_of(c.left.begin(), c.left.end(), [&](const Plane &p) {
+                return same(p.normal, g.gradient);
+              });
+            // Faces within 10 degrees of each other: the mean of their
+            // normals, fixed for the rest of the solve (two planes would be
+            // ill-conditioned; the gaps converge linearly, fast).
+            if (back && cross_product_3d(g.gradient, c.face.normal).norm() <
+                          crease_sine)
+              {
+                c.locked = true;
+                c.normal = g.gradient + c.face.normal;
+                c.normal /= c.normal.norm();
+                return;
+              }
+            if (back)
+              c.held = {current, c.face};
+            else
+              {
+                c.left.push_back(c.face);
+                if (c.left.size() > 4)
+                  c.left.erase(c.left.begin());
+              }
+          }
+      }
+    else if (std::abs(g.gap) > gap_tolerance &&
+             std::none_of(c.held.begin(), c.held.end(), [&](const Plane &p) {
+               return same(p.normal, g.gradient);
+             }))
+      {
+        if (g.gap > 0)
+          // Off the surface, held by planes whose faces it has slid past
+          // (over a ridge): it follows the closest face again.
+          c.held.clear();
+        else
+          {
+            // Through another face: held too, if independent of the held
+            // planes; otherwise it replaces the held plane closest to it.
+            auto closest = c.held.begin();
+            for (auto p = c.held.begin(); p != c.held.end(); ++p)
+              if (p->normal * g.gradient > closest->normal * g.gradient)
+                closest = p;
+            const bool independent =
+              c.held.size() == 1 ?
+                cross_product_3d(closest->normal, g.gradient).norm() >
+                  crease_sine :
+              c.held.size() == 2 ?
+                std::abs(cross_product_3d(c.held[0].normal, c.held[1].normal) *
+                         g.gradient) > crease_sine * crease_sine :
+                false;
+            if (independent)
+              c.held.push_back(current);
+            else
+              *closest = current;
+          }
+      }
+    for (Plane &p : c.held)
+      p.gap = p.normal * (x - p.point);
+    if (c.held.empty())
+      c.normal = g.gradient;
+    else
+      set_normal_from_held(c);
+  }
+
+  void
+  ContactProblem::set_normal_from_held(Candidate &c)
+  {
+    Tensor<1, 3> sum;
+    for (const Plane &p : c.held)
+      sum += p.normal;
+    c.normal = sum / sum.norm();
+  }
+
   bool
   ContactProblem::thaw_if_adhesive(const VectorType &raw_residual)
   {
@@ -330,14 +476,36 @@ namespace RestShape
     // Nodal contact forces recovered from the residual scatter around zero
     // at the rim of a contact zone (P1 especially): a pull below 0.1 % of
     // the total contact force is accepted; a larger one releases exactly the
-    // pulling nodes (the rest of the set stays, releases stay frozen).
+    // pulling nodes and the pulling planes of crease nodes (the rest of the
+    // set stays, releases stay frozen).
     const std::vector<double> p    = pressures(raw_residual);
     double                    push = 0, pull = 0;
     std::vector<unsigned int> pulling;
+    std::vector<double>       lambda;
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned && candidates[i].active)
         {
-          const double force = p[i] * candidates[i].area_lumped;
+          Candidate &c = candidates[i];
+          if (c.held.size() > 1)
+            {
+              reaction(c, raw_residual, &lambda);
+              for (unsigned int k = 0; k < lambda.size(); ++k)
+                if (lambda[k] < 0)
+                  {
+                    pull -= lambda[k];
+                    c.dropped |= 1u << k;
+                  }
+                else
+                  push += lambda[k];
+              // Every plane pulls: the node is released.
+              if (c.dropped + 1 == (1u << lambda.size()))
+                {
+                  c.dropped = 0;
+                  pulling.push_back(i);
+                }
+              continue;
+            }
+          const double force = p[i] * c.area_lumped;
           if (force < 0)
             {
               pull -= force;
@@ -351,7 +519,13 @@ namespace RestShape
     push = Utilities::MPI::sum(push, comm);
     pull = Utilities::MPI::sum(pull, comm);
     if (pull <= 1e-3 * push)
-      return false;
+      {
+        for (Candidate &c : candidates)
+          c.dropped = 0;
+        return false;
+      }
+    for (Candidate &c : candidates)
+      drop_planes(c, c.dropped);
     for (const unsigned int i : pulling)
       {
         candidates[i].active = false;
@@ -387,30 +561,79 @@ namespace RestShape
                                   const AffineConstraints<double> &base) const
   {
     for (const Candidate &c : candidates)
+      if (c.active && (c.held.empty() ||
+                       !add_plane_constraints(c, c.held, constraints, base)))
+        add_plane_constraints(c,
+                              {Plane{c.normal, Point<3>(), c.gap}},
+                              constraints,
+                              base);
+  }
+
+  bool
+  ContactProblem::add_plane_constraints(
+    const Candidate                 &c,
+    const std::vector<Plane>        &planes,
+    AffineConstraints<double>       &constraints,
+    const AffineConstraints<double> &base) const
+  {
+    // N delta = -g for the m planes (rows n_i), solved for the m free
+    // components S whose block of N is best conditioned (largest |det|):
+    // delta_S = N_S^-1 (-g - N_R delta_R) over the other free components R.
+    const auto               &dofs = c.node.dofs;
+    std::vector<unsigned int> free;
+    for (unsigned int j = 0; j < 3; ++j)
+      if (!c.fixed[j] && !base.is_constrained(dofs[j]))
+        free.push_back(j);
+    const unsigned int m = planes.size();
+    if (m > free.size())
+      return false;
+    std::vector<unsigned int> best, subset;
+    double                    best_det = 0;
+    FullMatrix<double>        block(m, m);
+    // Every m-subset of the free components, by bitmask.
+    for (unsigned int mask = 0; mask < (1u << free.size()); ++mask)
       {
-        if (!c.active)
+        subset.clear();
+        for (unsigned int b = 0; b < free.size(); ++b)
+          if (mask & (1u << b))
+            subset.push_back(free[b]);
+        if (subset.size() != m)
           continue;
-        const auto         &dofs = c.node.dofs;
-        std::array<bool, 3> free;
-        int                 k = -1;
-        for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int q = 0; q < m; ++q)
+            block(i, q) = planes[i].normal[subset[q]];
+        const double det = std::abs(block.determinant());
+        if (det > best_det)
           {
-            free[j] = !c.fixed[j] && !base.is_constrained(dofs[j]);
-            if (free[j] &&
-                (k < 0 || std::abs(c.normal[j]) > std::abs(c.normal[k])))
-              k = j;
+            best_det = det;
+            best     = subset;
           }
-        // A node that can only move (almost) tangentially cannot be pushed
-        // back by its free components.
-        if (k < 0 || std::abs(c.normal[k]) < 0.2)
-          continue;
-        // n . delta = -g, solved for the dominant component.
-        constraints.add_line(dofs[k]);
-        for (unsigned int j = 0; j < 3; ++j)
-          if (j != unsigned(k) && free[j])
-            constraints.add_entry(dofs[k], dofs[j], -c.normal[j] / c.normal[k]);
-        constraints.set_inhomogeneity(dofs[k], -c.gap / c.normal[k]);
       }
+    // A node that can only move (almost) tangentially to a plane cannot be
+    // pushed back by its free components.
+    if (best_det < (m == 1 ? 0.2 : 0.05))
+      return false;
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int q = 0; q < m; ++q)
+        block(i, q) = planes[i].normal[best[q]];
+    block.gauss_jordan();
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        constraints.add_line(dofs[best[r]]);
+        double inhomogeneity = 0;
+        for (unsigned int q = 0; q < m; ++q)
+          inhomogeneity -= block(r, q) * planes[q].gap;
+        constraints.set_inhomogeneity(dofs[best[r]], inhomogeneity);
+        for (const unsigned int j : free)
+          if (std::find(best.begin(), best.end(), j) == best.end())
+            {
+              double coefficient = 0;
+              for (unsigned int q = 0; q < m; ++q)
+                coefficient -= block(r, q) * planes[q].normal[j];
+              constraints.add_entry(dofs[best[r]], dofs[j], coefficient);
+            }
+      }
+    return true;
   }
 
   ContactProblem::Violations
@@ -475,6 +698,16 @@ namespace RestShape
   }
 
   unsigned int
+  ContactProblem::n_held() const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += (c.owned && c.active && c.held.size() > 1);
+    return Utilities::MPI::sum(
+      n, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  unsigned int
   ContactProblem::n_candidates() const
   {
     unsigned int n = 0;
@@ -500,7 +733,7 @@ namespace RestShape
     Tensor<1, 3> force;
     for (const Candidate &c : candidates)
       if (c.owned && c.active)
-        force += contact_force(c, raw_residual) * c.normal;
+        force += reaction(c, raw_residual);
     const MPI_Comm comm =
       forward.dof_handler().get_triangulation().get_communicator();
     for (unsigned int k = 0; k < 3; ++k)

@@ -10,6 +10,7 @@
 #include <restshape/obstacle.h>
 #include <restshape/parameters.h>
 
+#include <array>
 #include <memory>
 #include <set>
 #include <string>
@@ -29,7 +30,10 @@ namespace RestShape
    * the raw residual r, N; zero for inactive nodes), A_i the node's lumped
    * (HRZ) area, c = (Active set constant) E_max / h_min. Active nodes get the
    * linearised constraint n_i . delta_i = -g_i (an AffineConstraints line on
-   * their dominant free component, general normals allowed).
+   * their dominant free component, general normals allowed). A node resting
+   * in a crease of the triangulated obstacle (its closest face alternates)
+   * holds the planes of both faces, two constraints, and slides along the
+   * crease; in a corner, three.
    *
    * One-sided rule (Morin et al. 2015): a node is eligible once it has been
    * on the allowed side (g >= -g_tol) during the solve, or once a Newton step
@@ -119,6 +123,10 @@ namespace RestShape
     // --- results at the state of the last update ------------------------
     unsigned int
     n_active() const;
+    /// Active nodes that hold the planes of two or three faces (creases and
+    /// corners of the obstacle's triangulation).
+    unsigned int
+    n_held() const;
     /// Sum of the obstacle's forces on the body (N).
     dealii::Tensor<1, 3>
     total_force(const VectorType &raw_residual) const;
@@ -155,20 +163,34 @@ namespace RestShape
     double gap_tolerance;
 
   private:
+    /// The plane of an obstacle face: unit normal towards the allowed side,
+    /// a point on it (m), and a node's signed distance from it (m).
+    struct Plane
+    {
+      dealii::Tensor<1, 3> normal;
+      dealii::Point<3>     point;
+      double               gap = 0;
+    };
+
     struct Candidate
     {
       Node                node;
       std::array<bool, 3> fixed;
       bool                owned;
-      double       area_lumped    = 0; // HRZ over all its boundary faces, m^2
-      bool         eligible       = false;
-      bool         active         = false;
-      bool         pulled         = false; // released by thaw_if_adhesive()
-      bool         normal_locked  = false; // crease node: normal fixed
-      unsigned int normal_changes = 0;     // face changes while frozen
-      double       gap            = 0;
+      double area_lumped = 0; // HRZ over all its boundary faces, m^2
+      bool   eligible    = false;
+      bool   active      = false;
+      bool   pulled      = false; // released by thaw_if_adhesive()
+      double gap         = 0;
       dealii::Tensor<1, 3> normal;
       dealii::Point<3>     previous_position;
+      /// While releases are frozen: the plane of the closest face at the
+      /// last update, the faces left since (at most four), and the planes
+      /// held (see update_active_set()).
+      Plane              face;
+      std::vector<Plane> left, held;
+      unsigned int       dropped = 0; // held planes let go (bits; owner, thaw)
+      bool locked = false; // crease of nearly parallel faces: normal fixed
     };
 
     /// Violated contact conditions over all ranks, at the state of the
@@ -184,8 +206,32 @@ namespace RestShape
 
     dealii::Point<3>
     position(const Candidate &c, const VectorType &d) const;
+    /// The obstacle's force on an active node along its normal (N).
     double
     contact_force(const Candidate &c, const VectorType &raw_residual) const;
+    /// The obstacle's force on an active node (N): along its normal, or
+    /// split among its held planes (their multipliers, in the order of
+    /// Candidate::held, in @p multipliers if given).
+    dealii::Tensor<1, 3>
+    reaction(const Candidate     &c,
+             const VectorType    &raw_residual,
+             std::vector<double> *multipliers = nullptr) const;
+    /// Update the held planes of an active node while releases are frozen.
+    void
+    update_held_planes(Candidate &c, const dealii::Point<3> &x, const Gap &g);
+    /// Let go of the held planes whose bits are set in @p mask.
+    static void
+    drop_planes(Candidate &c, const unsigned int mask);
+    /// The node's normal: the mean of its held planes' normals.
+    static void
+    set_normal_from_held(Candidate &c);
+    /// Add the constraints n_i . delta = -g_i of the planes @p planes of
+    /// candidate @p c; false if its free components cannot satisfy them.
+    bool
+    add_plane_constraints(const Candidate                         &c,
+                          const std::vector<Plane>                &planes,
+                          dealii::AffineConstraints<double>       &constraints,
+                          const dealii::AffineConstraints<double> &base) const;
     void
     share_flags();
     /// Contact pressure of every candidate (Pa; 0 where inactive).

@@ -1,0 +1,155 @@
+// Contact in the creases of a triangulated obstacle: an elastic hemisphere
+// (R = 50 mm, E = 10 kPa, nu = 0.3), dome down, its flat top fixed, sags
+// under gravity (x 5) into a rigid bowl: a closed icosphere of 320 flat
+// faces, circumradius 52 mm, centred on the hemisphere's centre (Side =
+// inside, as a brain in a skull). From inside, every edge of the bowl is a
+// crease where two faces meet at about 12 degrees, and the dome presses
+// into them. Nodes in a crease hold both faces' planes; before they did,
+// the closest face alternated, the normal was fixed to a smoothed one and
+// the gaps converged linearly. Checks: the solve converges, some nodes hold
+// crease planes, no node is through the bowl and every active node is on
+// it, and the forces balance (weight = contact force + reaction at the
+// fixed top, each component, relative to the weight).
+#include <deal.II/base/mpi.h>
+
+#include <restshape/contact.h>
+#include <restshape/generated_meshes.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "test_utilities.h"
+
+using namespace dealii;
+using namespace RestShape;
+using namespace RestShape::Test;
+
+namespace
+{
+  /// An icosphere (icosahedron split twice: 320 faces) of circumradius
+  /// @p radius around @p centre, faces oriented outward, as OFF.
+  void
+  write_icosphere(const std::string &file,
+                  const Point<3>    &centre,
+                  const double       radius)
+  {
+    const double                             t = (1 + std::sqrt(5.)) / 2;
+    std::vector<Point<3>>                    v = {{-1, t, 0},
+                                                  {1, t, 0},
+                                                  {-1, -t, 0},
+                                                  {1, -t, 0},
+                                                  {0, -1, t},
+                                                  {0, 1, t},
+                                                  {0, -1, -t},
+                                                  {0, 1, -t},
+                                                  {t, 0, -1},
+                                                  {t, 0, 1},
+                                                  {-t, 0, -1},
+                                                  {-t, 0, 1}};
+    std::vector<std::array<unsigned int, 3>> f = {
+      {{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}}, {{0, 10, 11}},
+      {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}},
+      {{3, 9, 4}},  {{3, 4, 2}},  {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},
+      {{4, 9, 5}},  {{2, 4, 11}}, {{6, 2, 10}},  {{8, 6, 7}},  {{9, 8, 1}}};
+    for (Point<3> &p : v)
+      p /= p.norm();
+    for (unsigned int level = 0; level < 2; ++level)
+      {
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> middle;
+        const auto mid = [&](unsigned int a, unsigned int b) {
+          const auto key = std::minmax(a, b);
+          auto       it  = middle.find(key);
+          if (it != middle.end())
+            return it->second;
+          Point<3> m = v[a] + v[b];
+          v.push_back(m / m.norm());
+          return middle[key] = v.size() - 1;
+        };
+        std::vector<std::array<unsigned int, 3>> finer;
+        for (const auto &[a, b, c] : f)
+          {
+            const unsigned int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            finer.push_back({{a, ab, ca}});
+            finer.push_back({{b, bc, ab}});
+            finer.push_back({{c, ca, bc}});
+            finer.push_back({{ab, bc, ca}});
+          }
+        f = finer;
+      }
+    std::ofstream out(file);
+    out << "OFF\n" << v.size() << ' ' << f.size() << " 0\n";
+    for (const Point<3> &p : v)
+      out << centre + radius * p << '\n';
+    for (auto [a, b, c] : f)
+      {
+        // Outward: the normal points away from the centre.
+        if (cross_product_3d(v[b] - v[a], v[c] - v[a]) * (v[a] + v[b] + v[c]) <
+            0)
+          std::swap(b, c);
+        out << "3 " << a << ' ' << b << ' ' << c << '\n';
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string dir       = std::filesystem::temp_directory_path().string();
+  const std::string mesh_file = dir + "/restshape_crease_hemisphere.msh";
+  const std::string bowl_file = dir + "/restshape_crease_bowl.off";
+  {
+    Triangulation<3> tria;
+    make_hemisphere(tria, 50, 2, 2);
+    write_gmsh(
+      tria,
+      [&](unsigned int v) { return tria.get_vertices()[v]; },
+      1.,
+      mesh_file);
+  }
+  write_icosphere(bowl_file, Point<3>(0, 0, 50), 51);
+
+  Scene          s("subsection Mesh\n set File = " + mesh_file +
+          "\n set Cell type = hexahedra\nend\n"
+                   "subsection Materials\n set Young's modulus = 10000\n"
+                   " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
+                   "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
+                   "subsection Loads\n set Gravity = 0, 0, -98.1\nend\n"
+                   "subsection Contact\n set Obstacle file = " +
+          bowl_file + "\n set Side = inside\nend\n");
+  ContactProblem contact(s.parameters.contact, *s.forward, s.timer);
+  s.forward->set_contact(&contact);
+  s.forward->setup();
+  contact.setup();
+  const SolveStatistics stats =
+    s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+  std::filesystem::remove(mesh_file);
+  std::filesystem::remove(bowl_file);
+
+  const Tensor<1, 3> weight =
+    s.forward->total_external_force(s.forward->load());
+  const Tensor<1, 3> balance = weight +
+                               contact.total_force(s.forward->raw_residual()) +
+                               s.forward->support_reaction();
+  std::cout << s.forward->dof_handler().n_dofs() << " DoFs ("
+            << s.forward->locally_owned_dofs().n_elements() << " on this of "
+            << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " ranks), "
+            << contact.n_active() << " active nodes, " << contact.n_held()
+            << " in creases, " << stats.newton_iterations
+            << " Newton iterations, " << stats.load_steps << " load steps"
+            << (stats.converged ? "" : ": " + stats.failure) << std::endl;
+  check_between("converged", stats.converged, 1, 1);
+  check_between("nodes holding crease planes (at least 5)",
+                contact.n_held(),
+                5,
+                1e9);
+  check_between("contact conditions met", contact.is_satisfied(), 1, 1);
+  for (unsigned int k = 0; k < 3; ++k)
+    check_below("force balance, component " + std::to_string(k) +
+                  " (relative to the weight)",
+                std::abs(balance[k]) / weight.norm(),
+                1e-8);
+  return exit_code();
+}
