@@ -251,11 +251,12 @@ namespace RestShape
         c.previous_position = x;
         // Warm start: the active set of the last solve, for nodes that are
         // on the allowed side and within a cell size of the obstacle now.
-        c.eligible = g.gap >= -gap_tolerance;
-        c.active   = c.active && c.eligible && g.gap < h_min;
-        c.pulled   = false;
-        c.face     = Plane();
-        c.locked   = false;
+        c.eligible      = g.gap >= -gap_tolerance;
+        c.active        = c.active && c.eligible && g.gap < h_min;
+        c.pulled        = false;
+        c.face          = Plane();
+        c.locked        = false;
+        c.plane_changes = 0;
         c.left.clear();
         c.held.clear();
       }
@@ -309,8 +310,9 @@ namespace RestShape
           update_held_planes(c, x, g);
         else
           {
-            c.normal = g.normal;
-            c.locked = false;
+            c.normal        = g.normal;
+            c.locked        = false;
+            c.plane_changes = 0;
             c.left.clear();
             c.held.clear();
           }
@@ -411,7 +413,10 @@ namespace RestShape
                 return;
               }
             if (back)
-              c.held = {current, c.face};
+              {
+                c.held = {current, c.face};
+                ++c.plane_changes;
+              }
             else
               {
                 c.left.push_back(c.face);
@@ -428,7 +433,10 @@ namespace RestShape
         if (g.gap > 0)
           // Off the surface, held by planes whose faces it has slid past
           // (over a ridge): it follows the closest face again.
-          c.held.clear();
+          {
+            c.held.clear();
+            ++c.plane_changes;
+          }
         else
           {
             // Through another face: held too, if independent of the held
@@ -449,7 +457,22 @@ namespace RestShape
               c.held.push_back(current);
             else
               *closest = current;
+            ++c.plane_changes;
           }
+      }
+    // A node whose planes keep changing (held, let go, held again; or two
+    // faces replacing each other: 2-cycles seen with P2 at gravity x 10)
+    // gets the mean of its planes' normals and the closest face's, fixed
+    // for the rest of the solve, with the distance to the surface as gap.
+    if (c.plane_changes > 6)
+      {
+        Tensor<1, 3> sum = g.gradient;
+        for (const Plane &p : c.held)
+          sum += p.normal;
+        c.normal = sum / sum.norm();
+        c.locked = true;
+        c.held.clear();
+        return;
       }
     for (Plane &p : c.held)
       p.gap = p.normal * (x - p.point);

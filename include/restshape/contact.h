@@ -191,6 +191,7 @@ namespace RestShape
       std::vector<Plane> left, held;
       unsigned int       dropped = 0; // held planes let go (bits; owner, thaw)
       bool locked = false; // crease of nearly parallel faces: normal fixed
+      unsigned int plane_changes = 0; // changes of the held planes, frozen
     };
 
     /// Violated contact conditions over all ranks, at the state of the
