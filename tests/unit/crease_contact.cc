@@ -111,18 +111,15 @@ main(int argc, char **argv)
   }
   write_icosphere(bowl_file, Point<3>(0, 0, 50), 51);
 
-  Scene          s("subsection Mesh\n set File = " + mesh_file +
+  Scene                 s("subsection Mesh\n set File = " + mesh_file +
           "\n set Cell type = hexahedra\nend\n"
-                   "subsection Materials\n set Young's modulus = 10000\n"
-                   " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
-                   "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
-                   "subsection Loads\n set Gravity = 0, 0, -98.1\nend\n"
-                   "subsection Contact\n set Obstacle file = " +
+                          "subsection Materials\n set Young's modulus = 10000\n"
+                          " set Poisson's ratio = 0.3\n set Density = 1000\nend\n"
+                          "subsection Boundary conditions\n set Fixed labels = 2\nend\n"
+                          "subsection Loads\n set Gravity = 0, 0, -98.1\nend\n"
+                          "subsection Contact\n set Obstacle file = " +
           bowl_file + "\n set Side = inside\nend\n");
-  ContactProblem contact(s.parameters.contact, *s.forward, s.timer);
-  s.forward->set_contact(&contact);
-  s.forward->setup();
-  contact.setup();
+  ContactProblem       &contact = s.add_contact();
   const SolveStatistics stats =
     s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
   std::filesystem::remove(mesh_file);

@@ -50,10 +50,7 @@ namespace
       "subsection Boundary conditions\n set Fixed labels = 2:xy\nend\n"
       "subsection Loads\n set Surface pressure = 15\n set Pressure labels = 2\nend\n"
       "subsection Contact\n set Obstacle file = meshes/floor_large.off\n set Side = outside\nend\n");
-    ContactProblem contact(s.parameters.contact, *s.forward, s.timer);
-    s.forward->set_contact(&contact);
-    s.forward->setup();
-    contact.setup();
+    ContactProblem       &contact = s.add_contact();
     const SolveStatistics stats =
       s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
     std::filesystem::remove(file);

@@ -46,25 +46,16 @@ namespace
       "subsection Inverse problem\n set Enabled = true\n set Tolerance = 1e-8\n"
       " set Acceleration = " +
       acceleration + "\nend\n");
-    std::unique_ptr<ContactProblem> contact;
-    if (!obstacle.empty())
-      {
-        contact = std::make_unique<ContactProblem>(s.parameters.contact,
-                                                   *s.forward,
-                                                   s.timer);
-        s.forward->set_contact(contact.get());
-        s.forward->setup();
-        contact->setup();
-      }
-    Timer          wall;
-    InverseProblem inverse(s.parameters.inverse,
+    ContactProblem *contact = obstacle.empty() ? nullptr : &s.add_contact();
+    Timer           wall;
+    InverseProblem  inverse(s.parameters.inverse,
                            *s.forward,
-                           contact.get(),
+                           contact,
                            nullptr,
                            s.timer,
                            s.pcout,
                            wall);
-    Run            r;
+    Run             r;
     r.result = inverse.run(s.forward->zero_vector(), 0);
     r.rest   = s.forward->zero_vector();
     r.rest   = s.forward->rest_displacement();

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <restshape/contact.h>
 #include <restshape/forward_problem.h>
 #include <restshape/material.h>
 #include <restshape/mesh.h>
@@ -75,6 +76,19 @@ namespace RestShape::Test
       forward->setup();
     }
 
+    /// Contact with the scene's obstacle (subsection Contact), attached to
+    /// the forward problem and set up.
+    ContactProblem &
+    add_contact()
+    {
+      contact =
+        std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+      forward->set_contact(contact.get());
+      forward->setup();
+      contact->setup();
+      return *contact;
+    }
+
     dealii::ParameterHandler        prm;
     Parameters                      parameters;
     dealii::ConditionalOStream      pcout;
@@ -82,6 +96,7 @@ namespace RestShape::Test
     std::unique_ptr<LabelledMesh>   mesh;
     std::unique_ptr<MaterialTable>  materials;
     std::unique_ptr<ForwardProblem> forward;
+    std::unique_ptr<ContactProblem> contact;
   };
 } // namespace RestShape::Test
 
