@@ -60,15 +60,23 @@ namespace RestShape
                        contact != nullptr ? contact->n_active() : 0,
                        wall_timer.wall_time(),
                        anderson});
+    std::string contact_text;
+    if (contact != nullptr)
+      {
+        contact_text = ", " +
+                       std::to_string(history.back().active_contact_nodes) +
+                       " contact nodes";
+        const auto [n_fixed, distance] = contact->fixed_plane_nodes();
+        if (n_fixed > 0)
+          contact_text += ", " + std::to_string(n_fixed) +
+                          " on fixed planes, up to " + mm(distance) +
+                          " off the obstacle";
+      }
     pcout << "Inverse iteration " << iteration << ": mean error "
           << mm(errors.first) << ", max " << mm(errors.second) << " ("
           << stats.newton_iterations << " Newton iterations"
-          << (anderson ? ", Anderson step" : "")
-          << (contact != nullptr ?
-                ", " + std::to_string(history.back().active_contact_nodes) +
-                  " contact nodes" :
-                std::string())
-          << ")" << std::endl;
+          << (anderson ? ", Anderson step" : "") << contact_text << ")"
+          << std::endl;
   }
 
   void

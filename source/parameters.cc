@@ -588,6 +588,18 @@ namespace RestShape
                       "converged). Lower it (e.g. 4) for large contact zones "
                       "on curved obstacles, where the set otherwise wanders "
                       "(the brain).");
+    prm.declare_entry(
+      "Crease plane changes",
+      "6",
+      Patterns::Integer(0),
+      "A contact node in a crease of the triangulated obstacle holds the "
+      "planes of the faces meeting there (doc/contact.md). Once the planes it "
+      "holds have changed more than this many times in a solve (2-cycles, "
+      "seen at heavy load), they are fixed for the rest of the solve: linear "
+      "constraints that Newton meets exactly. Such a node may end slightly "
+      "off the surface; summary.json reports how many there are "
+      "(fixed_plane_nodes) and how far (fixed_plane_distance_mm). 0 fixes "
+      "the planes at their first change.");
     prm.leave_subsection();
   }
 
@@ -604,6 +616,7 @@ namespace RestShape
       parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
     active_set_constant = prm.get_double("Active set constant");
     free_updates        = prm.get_integer("Free active-set updates");
+    plane_changes       = prm.get_integer("Crease plane changes");
     prm.leave_subsection();
     if (!(active_set_constant > 0))
       throw InputError("",

@@ -429,6 +429,9 @@ namespace RestShape
         summary.set("max_penetration_mm",
                     contact->max_penetration(true) * 1e3 + 0.);
         summary.set("nodes_outside", long(contact->n_outside()));
+        const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
+        summary.set("fixed_plane_nodes", long(n_fixed));
+        summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
         const auto [p_min, p_max] =
           contact->pressure_range(forward->raw_residual());
         summary.set("contact_pressure_min_Pa", p_min);
@@ -528,9 +531,18 @@ namespace RestShape
       pcout << "  Elastic support: force " << support_force << " N"
             << std::endl;
     if (contact)
-      pcout << "  Contact: " << contact->n_active() << " active nodes, force "
-            << contact_force << " N, largest penetration "
-            << contact->max_penetration(true) * 1e3 << " mm" << std::endl;
+      {
+        pcout << "  Contact: " << contact->n_active() << " active nodes, force "
+              << contact_force << " N, largest penetration "
+              << contact->max_penetration(true) * 1e3 << " mm" << std::endl;
+        const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
+        if (n_fixed > 0)
+          pcout << "  Contact: " << n_fixed
+                << " nodes on fixed planes (their planes kept changing), up "
+                   "to "
+                << fixed_distance * 1e3 << " mm off the obstacle surface"
+                << std::endl;
+      }
     if (parameters.output.write_nodal_csv)
       {
         TimerOutput::Scope scope(timer, "Output");

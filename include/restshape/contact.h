@@ -127,6 +127,11 @@ namespace RestShape
     /// corners of the obstacle's triangulation).
     unsigned int
     n_held() const;
+    /// Active nodes whose planes kept changing and are fixed for the rest of
+    /// the solve, and the largest distance of one of them from the obstacle
+    /// surface (m): they meet their planes' constraints, not the surface's.
+    std::pair<unsigned int, double>
+    fixed_plane_nodes() const;
     /// Sum of the obstacle's forces on the body (N).
     dealii::Tensor<1, 3>
     total_force(const VectorType &raw_residual) const;
@@ -190,8 +195,16 @@ namespace RestShape
       Plane              face;
       std::vector<Plane> left, held;
       unsigned int       dropped = 0; // held planes let go (bits; owner, thaw)
-      bool locked = false; // crease of nearly parallel faces: normal fixed
+      /// Held planes fixed for the rest of the solve (they kept changing):
+      /// the node's constraints are these planes, not the surface.
+      bool         fixed_planes  = false;
       unsigned int plane_changes = 0; // changes of the held planes, frozen
+      /// For a node on fixed planes: the plane through their mean point
+      /// with their mean normal, imposed instead when the planes cannot be
+      /// (too few free components); whether they could, at the last
+      /// add_constraints().
+      Plane        mean_plane;
+      mutable bool planes_imposed = true;
     };
 
     /// Violated contact conditions over all ranks, at the state of the
@@ -220,6 +233,15 @@ namespace RestShape
     /// Update the held planes of an active node while releases are frozen.
     void
     update_held_planes(Candidate &c, const dealii::Point<3> &x, const Gap &g);
+    /// Forget the held planes and locks of a node (a new solve, or a node
+    /// that is not active while releases are frozen).
+    static void
+    let_go(Candidate &c);
+    /// The gap the node's constraints use (m): the signed distance to the
+    /// obstacle, or for a node on fixed planes the one farthest from 0 (or
+    /// the mean plane's, if those were imposed instead).
+    static double
+    constrained_gap(const Candidate &c);
     /// Let go of the held planes whose bits are set in @p mask.
     static void
     drop_planes(Candidate &c, const unsigned int mask);

@@ -180,7 +180,8 @@ namespace RestShape
     bool            inside; // allowed region: inside the closed surface
     std::set<Label> labels; // empty: all
     double          active_set_constant;
-    unsigned int    free_updates = 10;
+    unsigned int    free_updates  = 10;
+    unsigned int    plane_changes = 6; // then a crease node's planes are fixed
 
     bool
     enabled() const
