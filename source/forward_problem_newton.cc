@@ -255,19 +255,19 @@ namespace RestShape
   SolveStatistics
   ForwardProblem::solve(const LoadState &target_load, const VectorType &rest)
   {
-    SolveStatistics  stats;
-    const LoadState  start_load  = current_load;
-    const VectorType w_start     = w;
-    VectorType       d_converged = d;
-    double           s_done = 0, ds = 1. / parameters.solver.initial_load_steps;
-    unsigned int     halvings = 0;
+    SolveStatistics       stats;
+    const LoadState       start_load  = current_load;
+    const VectorType      w_start     = w;
+    VectorType            d_converged = d;
+    LoadSteps             steps{0, 1. / parameters.solver.initial_load_steps};
+    unsigned int          halvings = 0;
     ContactProblem::State contact_converged;
     if (contact != nullptr)
       contact_converged = contact->state();
 
-    while (s_done < 1)
+    while (steps.done < 1)
       {
-        const double s = std::min(1., s_done + ds);
+        const double s = steps.next();
         current_load.acceleration =
           start_load.acceleration +
           s * (target_load.acceleration - start_load.acceleration);
@@ -277,17 +277,16 @@ namespace RestShape
         w = w_start;
         w.sadd(1 - s, s, rest);
         w_ghost = w;
-        if (s < 1 || ds < 1)
+        if (s < 1 || steps.increment < 1)
           pcout << "    Load step to " << format("%.4f", s) << std::endl;
 
         if (newton(stats))
           {
-            s_done      = s;
+            steps.accept(s);
             d_converged = d;
             if (contact != nullptr)
               contact_converged = contact->state();
             ++stats.load_steps;
-            ds = std::min(2 * ds, 1.);
             continue;
           }
         // Back to the last equilibrium, smaller increment.
@@ -299,28 +298,28 @@ namespace RestShape
           {
             current_load.acceleration =
               start_load.acceleration +
-              s_done * (target_load.acceleration - start_load.acceleration);
+              steps.done * (target_load.acceleration - start_load.acceleration);
             current_load.pressure =
               start_load.pressure +
-              s_done * (target_load.pressure - start_load.pressure);
+              steps.done * (target_load.pressure - start_load.pressure);
             w = w_start;
-            w.sadd(1 - s_done, s_done, rest);
+            w.sadd(1 - steps.done, steps.done, rest);
             w_ghost = w;
             stats.failure += "; gave up after " + std::to_string(halvings - 1) +
                              " halvings of the load increment at " +
-                             format("%.4f", s_done) + " of the full load";
+                             format("%.4f", steps.done) + " of the full load";
             // Measured on the stability matrix (doc/benchmarks.md,
             // section 4): every case converged with the shift.
             if (parameters.discretization.tangent == TangentType::adaptive &&
                 parameters.solver.tangent_shift == 0)
               stats.failure += " (Solver/Tangent shift = 1e-3 may help)";
             pcout << "    Newton failed: " << stats.failure << std::endl;
-            stats.fraction = s_done;
+            stats.fraction = steps.done;
             return stats;
           }
         pcout << "    Newton failed (" << stats.failure
               << "); halving the increment" << std::endl;
-        ds /= 2;
+        steps.reject(s);
       }
     stats.converged = true;
     stats.fraction  = 1;

@@ -20,6 +20,7 @@
 #include <restshape/mesh.h>
 #include <restshape/parameters.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,6 +65,35 @@ namespace RestShape
     double fraction = 0;
     /// |R|/|f| after every accepted Newton step of the last load step.
     std::vector<double> residual_history;
+  };
+
+  /// The load increments of ForwardProblem::solve(), as fractions of the
+  /// way from the start to the target: an accepted increment doubles the
+  /// next one (up to the rest of the way), a failed one is halved.
+  struct LoadSteps
+  {
+    double done      = 0; // fraction in equilibrium
+    double increment = 1;
+
+    /// The fraction to try next.
+    double
+    next() const
+    {
+      return std::min(1., done + increment);
+    }
+    void
+    accept(const double s)
+    {
+      done      = s;
+      increment = std::min(2 * increment, 1.);
+    }
+    /// Half the increment that failed (which may have been cut at the full
+    /// load: halving the nominal increment alone retried the same step).
+    void
+    reject(const double s)
+    {
+      increment = (s - done) / 2;
+    }
   };
 
   class ForwardProblem

@@ -7,8 +7,9 @@
 // after a shortened step) reach the same equilibrium; adaptive keeps the
 // quadratic order at the end. A cap on the Newton iterations equal to the
 // count the consistent tangent needs still converges (the state the last
-// allowed step reaches is checked), one less does not. All counts are
-// printed for the record.
+// allowed step reaches is checked), one less does not. A failed load
+// increment is retried half as far, also when it was cut at the full load.
+// All counts are printed for the record.
 #include <deal.II/base/mpi.h>
 
 #include "test_utilities.h"
@@ -127,5 +128,22 @@ main(int argc, char **argv)
                 over_cap.stats.converged,
                 0,
                 0);
+
+  // Load increments: from a quarter, accepted twice (to 0.25, then 0.75),
+  // the next is cut at the full load (0.25 of the way); when it fails, the
+  // retry must go half as far (to 0.875), not to 1 again, and accepting
+  // that leaves 0.125 to go.
+  LoadSteps steps{0, 0.25};
+  steps.accept(steps.next());
+  steps.accept(steps.next());
+  const double cut = steps.next();
+  steps.reject(cut);
+  const double retry = steps.next();
+  steps.accept(retry);
+  std::cout << "load steps: 0.25, 0.75, " << cut << " failed, then " << retry
+            << ", then " << steps.next() << std::endl;
+  check_between("load step cut at the full load", cut, 1, 1);
+  check_between("retry after a failed cut step", retry, 0.875, 0.875);
+  check_between("step after the retry", steps.next(), 1, 1);
   return exit_code();
 }
