@@ -241,7 +241,9 @@ namespace RestShape
     history.clear();
     releases_frozen = false;
     n_added = n_released = 0;
-    n_updates = n_thaws = 0;
+    n_updates = n_thaws   = 0;
+    n_grazing_pulling     = 0;
+    grazing_pull_fraction = 0;
     for (Candidate &c : candidates)
       {
         const Point<3> x    = position(c, d);
@@ -254,6 +256,7 @@ namespace RestShape
         c.eligible = g.gap >= -gap_tolerance;
         c.active   = c.active && c.eligible && g.gap < h_min;
         c.pulled   = false;
+        c.grazing  = false;
         c.face     = Plane();
         let_go(c);
       }
@@ -356,7 +359,10 @@ namespace RestShape
             // A node released for pulling (thaw_if_adhesive) comes back
             // only if it goes through the obstacle.
             if (c.pulled && !c.active)
-              now_active = c.gap < -gap_tolerance;
+              {
+                now_active = c.gap < -gap_tolerance;
+                c.grazing  = c.grazing || now_active;
+              }
             if (releases_frozen && c.active)
               now_active = true;
           }
@@ -535,19 +541,38 @@ namespace RestShape
   {
     if (!releases_frozen || n_thaws >= 5)
       return false;
-    // Nodal contact forces recovered from the residual scatter around zero
-    // at the rim of a contact zone (P1 especially): a pull below 0.1 % of
-    // the total contact force is accepted; a larger one releases exactly the
-    // pulling nodes and the pulling planes of crease nodes (the rest of the
-    // set stays, releases stay frozen).
-    const std::vector<double> p    = pressures(raw_residual);
-    double                    push = 0, pull = 0;
+    // Each node's own multiplier decides (its contact force, or those of
+    // its held planes), as in update_active_set(); not the recovered
+    // pressure, which at the corners of quadratic faces is the mean of the
+    // neighbours' (pressures()) and could release a corner that pushes.
+    // Nodal contact forces scatter around zero at the rim of a contact
+    // zone (P1 especially): a pull below 0.1 % of the total contact force
+    // is accepted; a larger one releases exactly the pulling nodes and the
+    // pulling planes of crease nodes (the rest of the set stays, releases
+    // stay frozen). A node released before that came back through the
+    // obstacle (grazing) pulls when held and penetrates when free:
+    // releasing it again would only repeat that; it is held and its pull
+    // accepted and reported.
+    double                    push = 0, pull = 0, grazing_pull = 0;
+    unsigned int              n_grazing = 0;
     std::vector<unsigned int> pulling;
     std::vector<double>       lambda;
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned && candidates[i].active)
         {
           Candidate &c = candidates[i];
+          if (c.grazing)
+            {
+              const double force = contact_force(c, raw_residual);
+              if (force < 0)
+                {
+                  grazing_pull -= force;
+                  ++n_grazing;
+                }
+              else
+                push += force;
+              continue;
+            }
           if (c.held.size() > 1)
             {
               reaction(c, raw_residual, &lambda);
@@ -567,7 +592,7 @@ namespace RestShape
                 }
               continue;
             }
-          const double force = p[i] * c.area_lumped;
+          const double force = contact_force(c, raw_residual);
           if (force < 0)
             {
               pull -= force;
@@ -578,8 +603,11 @@ namespace RestShape
         }
     const MPI_Comm comm =
       forward.dof_handler().get_triangulation().get_communicator();
-    push = Utilities::MPI::sum(push, comm);
-    pull = Utilities::MPI::sum(pull, comm);
+    push                  = Utilities::MPI::sum(push, comm);
+    pull                  = Utilities::MPI::sum(pull, comm);
+    n_grazing_pulling     = Utilities::MPI::sum(n_grazing, comm);
+    grazing_pull_fraction = Utilities::MPI::sum(grazing_pull, comm) /
+                            std::max(push, std::numeric_limits<double>::min());
     if (pull <= 1e-3 * push)
       {
         for (Candidate &c : candidates)
@@ -780,6 +808,37 @@ namespace RestShape
       n += (c.owned && c.active && c.held.size() > 1);
     return Utilities::MPI::sum(
       n, forward.dof_handler().get_triangulation().get_communicator());
+  }
+
+  std::pair<unsigned int, double>
+  ContactProblem::adhesion(const VectorType &raw_residual) const
+  {
+    // Pulls within round-off of the total contact force (1e-9 of it) are
+    // not counted.
+    std::vector<double> pulls;
+    double              push = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const double force = contact_force(c, raw_residual);
+          if (force < 0)
+            pulls.push_back(-force);
+          else
+            push += force;
+        }
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
+    push              = Utilities::MPI::sum(push, comm);
+    unsigned int n    = 0;
+    double       pull = 0;
+    for (const double f : pulls)
+      if (f > 1e-9 * push)
+        {
+          ++n;
+          pull += f;
+        }
+    pull = Utilities::MPI::sum(pull, comm);
+    return {Utilities::MPI::sum(n, comm), push > 0 ? pull / push : 0.};
   }
 
   std::pair<unsigned int, double>

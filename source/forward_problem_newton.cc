@@ -115,10 +115,27 @@ namespace RestShape
         if (residual <= tol * reference &&
             (contact == nullptr || (!set_changed && contact->is_satisfied())))
           {
-            if (contact == nullptr || !contact->thaw_if_adhesive(residual_raw))
-              return true;
+            const bool thawed =
+              contact != nullptr && contact->thaw_if_adhesive(residual_raw);
+            const auto grazing = contact != nullptr ? contact->grazing_pull() :
+                                                      std::make_pair(0u, 0.);
+            const std::string grazing_text =
+              grazing.first == 0 ?
+                std::string() :
+                format("%.0f grazing nodes held although they pull "
+                       "(%.2g %% of the contact force)",
+                       grazing.first,
+                       100 * grazing.second);
+            if (!thawed)
+              {
+                if (!grazing_text.empty())
+                  pcout << "      " << grazing_text << std::endl;
+                return true;
+              }
             pcout << "      active nodes pull on the obstacle: released"
-                  << contact->progress_text() << std::endl;
+                  << contact->progress_text()
+                  << (grazing_text.empty() ? "" : "; " + grazing_text)
+                  << std::endl;
           }
         if (it > max_steps)
           break;

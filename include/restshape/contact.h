@@ -98,10 +98,21 @@ namespace RestShape
      * active nodes that pull on the obstacle (tensile contact force) carry
      * more than 0.1 % of the total contact force, exactly those are released
      * (they come back only if they go through the obstacle) and true is
-     * returned (Newton goes on); at most five times per solve.
+     * returned (Newton goes on); at most five times per solve. Nodes that
+     * came back (grazing) are held: their pull is accepted and reported
+     * (grazing_pull()).
      */
     bool
     thaw_if_adhesive(const VectorType &raw_residual);
+
+    /// At the last thaw_if_adhesive(): the number of grazing nodes that
+    /// pulled (held all the same) and their pull over the total contact
+    /// force.
+    std::pair<unsigned int, double>
+    grazing_pull() const
+    {
+      return {n_grazing_pulling, grazing_pull_fraction};
+    }
 
     /// No eligible node beyond the obstacle and every active node on it
     /// (within g_tol) at the state of the last update.
@@ -132,6 +143,11 @@ namespace RestShape
     /// surface (m): they meet their planes' constraints, not the surface's.
     std::pair<unsigned int, double>
     fixed_plane_nodes() const;
+    /// Active nodes whose own contact force pulls on the obstacle (accepted
+    /// below 0.1 % of the contact force, or as grazing, or when the thaws
+    /// ran out), and their pull over the total push of the others.
+    std::pair<unsigned int, double>
+    adhesion(const VectorType &raw_residual) const;
     /// Sum of the obstacle's forces on the body (N).
     dealii::Tensor<1, 3>
     total_force(const VectorType &raw_residual) const;
@@ -186,7 +202,11 @@ namespace RestShape
       bool   eligible    = false;
       bool   active      = false;
       bool   pulled      = false; // released by thaw_if_adhesive()
-      double gap         = 0;
+      /// Released for pulling and back through the obstacle in this solve:
+      /// it pulls when held and penetrates when free, so it is held and its
+      /// pull accepted (not released again in this solve).
+      bool                 grazing = false;
+      double               gap     = 0;
       dealii::Tensor<1, 3> normal;
       dealii::Point<3>     previous_position;
       /// While releases are frozen: the plane of the closest face at the
@@ -281,6 +301,8 @@ namespace RestShape
     double                 h_min           = 0;
     bool                   releases_frozen = false;
     unsigned int           n_updates = 0, n_thaws = 0;
+    unsigned int           n_grazing_pulling     = 0;
+    double                 grazing_pull_fraction = 0;
     unsigned int           n_added = 0, n_released = 0;
   };
 } // namespace RestShape

@@ -9,7 +9,8 @@
 // the gaps converged linearly. Checks: the solve converges, some nodes hold
 // crease planes, no node is through the bowl and every active node is on
 // it (or on its fixed planes, at most 0.05 mm off the bowl), fixing the
-// planes at their first change fixes more nodes but not the sag, and the
+// planes at their first change fixes more nodes but not the sag, no active
+// node pulls with more than the accepted 0.1 % of the contact force, and the
 // forces balance (weight = contact force + reaction at the
 // fixed top, each component, relative to the weight).
 #include <deal.II/base/mpi.h>
@@ -165,6 +166,13 @@ main(int argc, char **argv)
       check_below("distance of fixed-plane nodes off the bowl (mm)" + tag,
                   distance * 1e3,
                   0.05);
+      const auto [n_pulling, pull] =
+        contact.adhesion(s.forward->raw_residual());
+      std::cout << "  " << n_pulling << " active nodes pull, with " << pull
+                << " of the contact force" << std::endl;
+      check_below("pull of active nodes over the contact force" + tag,
+                  pull,
+                  1e-3);
       check_between("contact conditions met" + tag,
                     contact.is_satisfied(),
                     1,

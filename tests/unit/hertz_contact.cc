@@ -7,7 +7,8 @@
 // the contact radius (largest radius of an active node) and the peak
 // pressure must approach Hertz, and on the finer mesh agree within 3 %
 // (radius) and 3 % (peak pressure), 25 % for the peak on the coarse mesh.
-// The contact force must balance the load.
+// The contact force must balance the load, and no active node may pull with
+// more than the accepted 0.1 % of it.
 #include <deal.II/base/mpi.h>
 
 #include <restshape/contact.h>
@@ -25,7 +26,7 @@ namespace
 {
   struct Result
   {
-    double       force, load, a_num, a_hertz, p_num, p_hertz;
+    double       force, load, a_num, a_hertz, p_num, p_hertz, pull;
     unsigned int newton;
   };
 
@@ -64,13 +65,14 @@ namespace
     r.p_hertz = 3 * r.force / (2 * numbers::PI * r.a_hertz * r.a_hertz);
     r.a_num   = contact.contact_radius(Point<3>(), Tensor<1, 3>({0, 0, 1}));
     r.p_num   = contact.pressure_range(s.forward->raw_residual()).second;
+    r.pull    = contact.adhesion(s.forward->raw_residual()).second;
     std::cout << "refinements " << refinements << ": "
               << s.forward->dof_handler().n_dofs() << " DoFs, "
               << contact.n_active() << " active nodes, " << r.newton
               << " Newton iterations; F = " << r.force
               << " N; a = " << r.a_num * 1e3 << " mm (Hertz " << r.a_hertz * 1e3
-              << "), p0 = " << r.p_num << " Pa (Hertz " << r.p_hertz << ")"
-              << std::endl;
+              << "), p0 = " << r.p_num << " Pa (Hertz " << r.p_hertz
+              << "); pull of active nodes " << r.pull << " of F" << std::endl;
     return r;
   }
 } // namespace
@@ -87,6 +89,7 @@ main(int argc, char **argv)
       check_below("contact force vs applied load (relative)",
                   std::abs(r.force - r.load) / r.load,
                   1e-8);
+      check_below("pull of active nodes over the contact force", r.pull, 1e-3);
     }
   const auto err_a = [](const Result &r) {
     return std::abs(r.a_num - r.a_hertz) / r.a_hertz;
