@@ -810,7 +810,7 @@ namespace RestShape
       n, forward.dof_handler().get_triangulation().get_communicator());
   }
 
-  std::pair<unsigned int, double>
+  ContactProblem::Adhesion
   ContactProblem::adhesion(const VectorType &raw_residual) const
   {
     // Pulls within round-off of the total contact force (1e-9 of it) are
@@ -838,7 +838,7 @@ namespace RestShape
           pull += f;
         }
     pull = Utilities::MPI::sum(pull, comm);
-    return {Utilities::MPI::sum(n, comm), push > 0 ? pull / push : 0.};
+    return {Utilities::MPI::sum(n, comm), pull, push > 0 ? pull / push : 0.};
   }
 
   std::pair<unsigned int, double>

@@ -432,10 +432,11 @@ namespace RestShape
         const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
         summary.set("fixed_plane_nodes", long(n_fixed));
         summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
-        const auto [n_pulling, pull] =
+        const ContactProblem::Adhesion adhesion =
           contact->adhesion(forward->raw_residual());
-        summary.set("adhesive_contact_nodes", long(n_pulling));
-        summary.set("adhesive_force_fraction", pull);
+        summary.set("adhesive_contact_nodes", long(adhesion.nodes));
+        summary.set("adhesive_force_N", adhesion.force);
+        summary.set("adhesive_force_fraction", adhesion.fraction);
         const auto [p_min, p_max] =
           contact->pressure_range(forward->raw_residual());
         summary.set("contact_pressure_min_Pa", p_min);
@@ -546,12 +547,13 @@ namespace RestShape
                    "to "
                 << fixed_distance * 1e3 << " mm off the obstacle surface"
                 << std::endl;
-        const auto [n_pulling, pull] =
+        const ContactProblem::Adhesion adhesion =
           contact->adhesion(forward->raw_residual());
-        if (n_pulling > 0)
-          pcout << "  Contact: " << n_pulling
-                << " active nodes pull on the obstacle, with " << 100 * pull
-                << " % of the contact force (accepted)" << std::endl;
+        if (adhesion.nodes > 0)
+          pcout << "  Contact: " << adhesion.nodes
+                << " active nodes pull on the obstacle (accepted), with "
+                << adhesion.force << " N, " << 100 * adhesion.fraction
+                << " % of the contact force" << std::endl;
       }
     if (parameters.output.write_nodal_csv)
       {

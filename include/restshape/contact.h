@@ -145,8 +145,15 @@ namespace RestShape
     fixed_plane_nodes() const;
     /// Active nodes whose own contact force pulls on the obstacle (accepted
     /// below 0.1 % of the contact force, or as grazing, or when the thaws
-    /// ran out), and their pull over the total push of the others.
-    std::pair<unsigned int, double>
+    /// ran out): how many, their summed pull (N) and its ratio to the summed
+    /// push of the others.
+    struct Adhesion
+    {
+      unsigned int nodes    = 0;
+      double       force    = 0;
+      double       fraction = 0;
+    };
+    Adhesion
     adhesion(const VectorType &raw_residual) const;
     /// Sum of the obstacle's forces on the body (N).
     dealii::Tensor<1, 3>

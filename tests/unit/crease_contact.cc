@@ -166,12 +166,12 @@ main(int argc, char **argv)
       check_below("distance of fixed-plane nodes off the bowl (mm)" + tag,
                   distance * 1e3,
                   0.05);
-      const auto [n_pulling, pull] =
+      const ContactProblem::Adhesion adhesion =
         contact.adhesion(s.forward->raw_residual());
-      std::cout << "  " << n_pulling << " active nodes pull, with " << pull
-                << " of the contact force" << std::endl;
+      std::cout << "  " << adhesion.nodes << " active nodes pull, with "
+                << adhesion.fraction << " of the contact force" << std::endl;
       check_below("pull of active nodes over the contact force" + tag,
-                  pull,
+                  adhesion.fraction,
                   1e-3);
       check_between("contact conditions met" + tag,
                     contact.is_satisfied(),

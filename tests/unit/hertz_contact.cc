@@ -65,7 +65,7 @@ namespace
     r.p_hertz = 3 * r.force / (2 * numbers::PI * r.a_hertz * r.a_hertz);
     r.a_num   = contact.contact_radius(Point<3>(), Tensor<1, 3>({0, 0, 1}));
     r.p_num   = contact.pressure_range(s.forward->raw_residual()).second;
-    r.pull    = contact.adhesion(s.forward->raw_residual()).second;
+    r.pull    = contact.adhesion(s.forward->raw_residual()).fraction;
     std::cout << "refinements " << refinements << ": "
               << s.forward->dof_handler().n_dofs() << " DoFs, "
               << contact.n_active() << " active nodes, " << r.newton
