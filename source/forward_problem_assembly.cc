@@ -67,6 +67,8 @@ namespace RestShape
     Vector<double>                       cell_external; // f_ext
     std::vector<types::global_dof_index> dofs;
     bool                                 valid = true;
+    Point<3>                             center; // of an inverted cell
+    types::material_id                   label = 0;
     double energy                              = 0; // int W dV_rest - f_ext . d
   };
 
@@ -118,7 +120,9 @@ namespace RestShape
         if (!(det_G > 0) ||
             !law.evaluate(F, P, matrix ? &A : nullptr, tangent_type, &W))
           {
-            copy.valid = false;
+            copy.valid  = false;
+            copy.center = cell->center();
+            copy.label  = label;
             return;
           }
         const double JxW     = fe_values.JxW(q);
@@ -244,8 +248,9 @@ namespace RestShape
         tangent    = 0;
         rhs_buffer = 0;
       }
-    bool   all_valid = true;
-    double energy    = 0;
+    bool          all_valid = true;
+    double        energy    = 0;
+    InvertedCells inverted;
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
     WorkStream::run(
@@ -255,9 +260,15 @@ namespace RestShape
       [this, what](const CellFilter &cell, ScratchData &s, CopyData &c) {
         local_assemble(cell, s, c, what);
       },
-      [this, matrix, &all_valid, &energy](const CopyData &c) {
+      [this, matrix, &all_valid, &energy, &inverted](const CopyData &c) {
         if (!c.valid)
           {
+            if (all_valid)
+              {
+                inverted.center = c.center;
+                inverted.label  = c.label;
+              }
+            ++inverted.count;
             all_valid = false;
             return;
           }
@@ -293,7 +304,25 @@ namespace RestShape
         finish(rhs_buffer, rhs_newton);
       }
     total_energy = Utilities::MPI::sum(energy, comm);
-    return Utilities::MPI::min(all_valid ? 1 : 0, comm) == 1;
+    if (Utilities::MPI::min(all_valid ? 1 : 0, comm) == 1)
+      return true;
+    // One inverted cell to name: that of the lowest rank that has one.
+    const std::vector<double> mine = {double(inverted.count),
+                                      inverted.center[0],
+                                      inverted.center[1],
+                                      inverted.center[2],
+                                      double(inverted.label)};
+    inverted_cells.count           = 0;
+    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+      {
+        if (r[0] > 0 && inverted_cells.count == 0)
+          {
+            inverted_cells.center = Point<3>(r[1], r[2], r[3]);
+            inverted_cells.label  = types::material_id(r[4]);
+          }
+        inverted_cells.count += static_cast<unsigned int>(r[0]);
+      }
+    return false;
   }
 
   bool

@@ -25,6 +25,25 @@ namespace RestShape
   // ------------------------------------------------------------------
   // Newton's method with line search, inside load stepping.
 
+  std::string
+  ForwardProblem::inverted_cells_text() const
+  {
+    const Point<3> &c = inverted_cells.center;
+    char            text[160];
+    std::snprintf(text,
+                  sizeof(text),
+                  "%u cell%s inverted (det F <= 0), e.g. label %u at "
+                  "(%.1f, %.1f, %.1f) mm of the mesh",
+                  inverted_cells.count,
+                  inverted_cells.count == 1 ? "" : "s",
+                  static_cast<unsigned int>(inverted_cells.label),
+                  1e3 * c[0],
+                  1e3 * c[1],
+                  1e3 * c[2]);
+    return text;
+  }
+
+
   double
   ForwardProblem::linear_tolerance(const double residual,
                                    const double previous_residual,
@@ -77,14 +96,36 @@ namespace RestShape
     // projected step; mu is the current relative diagonal shift.
     const double mu_start =
       chosen == TangentType::adaptive ? parameters.solver.tangent_shift : 0.;
-    double     mu    = 0;
-    const auto raise = [&]() { mu = mu == 0 ? mu_start : 10 * mu; };
+    double mu = 0;
+    // Beyond this shift a step is below 1e-4 of a Jacobi step: raising it
+    // further cannot help (measured: P2 at gravity x 10 raised it to 1e95
+    // in 90 useless steps per load increment; increments that converged
+    // never needed more than 1). Then the Newton solve fails, and the load
+    // increment is halved.
+    const double mu_cap = 1e4;
+    const auto   raise  = [&]() {
+      mu = mu == 0 ? mu_start : 10 * mu;
+      return mu <= mu_cap;
+    };
+    const auto shift_failure = [&](const double       residual,
+                                   const std::string &inverted_text) {
+      return format("Newton stalls at |R|/|f| = %.3e: its steps stay "
+                    "short even with the tangent's diagonal scaled by "
+                    "1 + %.0e (the largest shift tried)",
+                    residual / reference,
+                    mu_cap) +
+             (inverted_text.empty() ?
+                std::string() :
+                "; the last shortened step: " + inverted_text);
+    };
     tangent_type =
       chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     // The last pass only checks convergence: the state the last allowed
     // step reached counts (it used to be thrown away at the cap even when
     // it met the tolerance).
     const unsigned int max_steps = parameters.solver.max_newton_iterations;
+    // Step lengths tried by the line search: 1, 1/2, ..., 1/2^11.
+    const unsigned int line_search_trials = 12;
     for (unsigned int it = 1; it <= max_steps + 1; ++it)
       {
         bool set_changed = false;
@@ -98,8 +139,8 @@ namespace RestShape
 
         if (!assemble(Assemble::residual_and_matrix))
           {
-            stats.failure = "a cell is inverted (det F <= 0) at the start "
-                            "of the Newton step";
+            stats.failure =
+              "at the start of the Newton step " + inverted_cells_text();
             return false;
           }
         if (mu > 0)
@@ -173,7 +214,9 @@ namespace RestShape
         bool         accepted        = false;
         double       trial_residual  = 0;
         unsigned int inverted_trials = 0;
-        for (unsigned int ls = 0; ls < 12 && !accepted; ++ls, alpha *= 0.5)
+        std::string  inverted_text;
+        for (unsigned int ls = 0; ls < line_search_trials && !accepted;
+             ++ls, alpha *= 0.5)
           {
             d = d_start;
             d.add(alpha, newton_update);
@@ -181,6 +224,7 @@ namespace RestShape
             if (!assemble(Assemble::residual))
               {
                 ++inverted_trials;
+                inverted_text = inverted_cells_text();
                 continue;
               }
             trial_residual = residual_condensed.l2_norm();
@@ -213,7 +257,14 @@ namespace RestShape
             if (mu_start > 0)
               {
                 if (alpha < alpha_max)
-                  raise();
+                  {
+                    if (!raise())
+                      {
+                        stats.failure =
+                          shift_failure(trial_residual, inverted_text);
+                        return false;
+                      }
+                  }
                 else
                   mu = mu < 1e-3 * mu_start ? 0 : 0.1 * mu;
               }
@@ -233,7 +284,11 @@ namespace RestShape
             d_ghost = d;
             if (mu_start > 0)
               {
-                raise();
+                if (!raise())
+                  {
+                    stats.failure = shift_failure(residual, inverted_text);
+                    return false;
+                  }
                 pcout << "      no step along this tangent helps: the "
                          "diagonal shift raised, from the same state"
                       << std::endl;
@@ -255,6 +310,13 @@ namespace RestShape
               format("the line search could not reduce the residual "
                      "(|R|/|f| = %.3e)",
                      residual / reference);
+            if (inverted_trials > 0)
+              stats.failure +=
+                format("; %.0f of its %.0f trial steps inverted cells, the "
+                       "shortest of them ",
+                       inverted_trials,
+                       line_search_trials) +
+                inverted_text;
             return false;
           }
       }

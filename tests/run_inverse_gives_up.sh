@@ -10,7 +10,12 @@
 # forward solve beyond the accepted iterations and rejected Anderson steps.
 # Then a forward solve that gives up (2 Newton steps, no load halvings) with
 # the adaptive tangent: its one stderr line suggests Solver/Tangent shift,
-# and does not once the shift is set.
+# and does not once the shift is set. Last, a load no equilibrium can carry
+# (the cantilever pushed into its support at 10^5 g, no load halvings, 200
+# Newton steps allowed) with the shift: every step is cut short by inverted
+# cells, so the shift is raised; at its largest value (1e4) Newton stops
+# with a message saying so and naming an inverted cell, within 20 steps
+# (before the cap on the shift, it raised the shift to 1e19 and ran all 200).
 #
 # usage: run_inverse_gives_up.sh RESTSHAPE OUTPUT_DIRECTORY
 set -u
@@ -56,3 +61,20 @@ for shift in 0 1e-3; do
   fi
 done
 echo "ok: the forward solve's message suggests the tangent shift only when it is off"
+
+"$exe" --set "Output/Directory=$out/stall" --set "Discretization/Polynomial degree=1" \
+  --set "Discretization/Tangent=adaptive" --set "Solver/Tangent shift=1e-3" \
+  --set "Solver/Maximum Newton iterations=200" --set "Solver/Maximum load step halvings=0" \
+  --set "Solver/Initial load steps=1" --set "Loads/Gravity=-981000, 0, 0" \
+  --set "Output/Write VTU=false" prm/cantilever.prm >"$out.stall.stdout" 2>"$out.stderr"
+code=$?
+[ "$code" -eq 2 ] || fail "stalled Newton: exit code $code, expected 2"
+[ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "stalled Newton: expected one line on stderr"
+grep -qF "the largest shift tried" "$out.stderr" || fail "stalled Newton: the message does not name the shift"
+grep -qF "inverted (det F <= 0), e.g. label" "$out.stderr" ||
+  fail "stalled Newton: the message does not name the inverted cells"
+steps=$(grep '"newton_iterations"' "$out/stall/summary.json" | sed 's/[^0-9]//g')
+echo "stalled Newton: stopped after $steps steps: $(cat "$out.stderr")"
+[ "$steps" -le 20 ] || fail "stalled Newton ran $steps steps, expected at most 20"
+grep -qiE 'nan|inf' "$out/stall/summary.json" && fail "NaN or infinity in summary.json"
+echo "ok: a stalled Newton with the shift stops at the largest shift"

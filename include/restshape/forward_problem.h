@@ -324,6 +324,18 @@ namespace RestShape
     BufferType d_buffer, w_buffer;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer;
     double     total_energy = 0; // of the last assembly (J)
+    // The last assembly that met an inverted cell (det F <= 0 or det G <=
+    // 0 at a quadrature point): how many, and one of them (label, centre
+    // in the mesh, m), summed and chosen over all ranks.
+    struct InvertedCells
+    {
+      unsigned int               count = 0;
+      dealii::Point<3>           center;
+      dealii::types::material_id label = 0;
+    } inverted_cells;
+    /// "3 cells inverted, e.g. label 1 at (x, y, z) mm of the mesh".
+    std::string
+    inverted_cells_text() const;
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
     LoadState   current_load;
