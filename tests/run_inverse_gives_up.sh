@@ -16,6 +16,8 @@
 # cells, so the shift is raised; at its largest value (1e4) Newton stops
 # with a message saying so and naming an inverted cell, within 20 steps
 # (before the cap on the shift, it raised the shift to 1e19 and ran all 200).
+# Without the shift the same load fails in the line search, whose message
+# names the inverted cells and does not suggest the shift.
 #
 # usage: run_inverse_gives_up.sh RESTSHAPE OUTPUT_DIRECTORY
 set -u
@@ -78,3 +80,14 @@ echo "stalled Newton: stopped after $steps steps: $(cat "$out.stderr")"
 [ "$steps" -le 20 ] || fail "stalled Newton ran $steps steps, expected at most 20"
 grep -qiE 'nan|inf' "$out/stall/summary.json" && fail "NaN or infinity in summary.json"
 echo "ok: a stalled Newton with the shift stops at the largest shift"
+
+"$exe" --set "Output/Directory=$out/stall0" --set "Discretization/Polynomial degree=1" \
+  --set "Discretization/Tangent=adaptive" --set "Solver/Tangent shift=0" \
+  --set "Solver/Maximum Newton iterations=200" --set "Solver/Maximum load step halvings=0" \
+  --set "Solver/Initial load steps=1" --set "Loads/Gravity=-981000, 0, 0" \
+  --set "Output/Write VTU=false" prm/cantilever.prm >"$out.stall0.stdout" 2>"$out.stderr"
+code=$?
+[ "$code" -eq 2 ] || fail "inverted cells, no shift: exit code $code, expected 2"
+grep -qF "trial steps inverted cells" "$out.stderr" || fail "inverted cells, no shift: the message does not name them"
+grep -qF "$hint" "$out.stderr" && fail "inverted cells, no shift: the message suggests the shift"
+echo "ok: $(cat "$out.stderr")"
