@@ -194,8 +194,7 @@ namespace RestShape
   {
     // The owner of a node decides; ghost copies follow, so that every
     // process builds the same constraints.
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm = communicator();
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
       {
         for (Candidate &c : candidates)
@@ -319,8 +318,7 @@ namespace RestShape
                                     const bool        first_iteration)
   {
     TimerOutput::Scope scope(timer, "Contact search");
-    const MPI_Comm     comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm     comm = communicator();
     n_added = n_released = 0;
     std::size_t hash     = 0;
     for (Candidate &c : candidates)
@@ -602,8 +600,7 @@ namespace RestShape
           else
             push += force;
         }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm   = communicator();
     push                  = Utilities::MPI::sum(push, comm);
     pull                  = Utilities::MPI::sum(pull, comm);
     n_grazing_pulling     = Utilities::MPI::sum(n_grazing, comm);
@@ -643,8 +640,7 @@ namespace RestShape
           if (rate < 0)
             alpha = std::min(alpha, std::max(c.gap + 0.25 * h_min, 0.) / -rate);
         }
-    return Utilities::MPI::min(
-      alpha, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::min(alpha, communicator());
   }
 
   void

@@ -15,6 +15,22 @@ namespace RestShape
 {
   using namespace dealii;
 
+  MPI_Comm
+  ContactProblem::communicator() const
+  {
+    return forward.dof_handler().get_triangulation().get_communicator();
+  }
+
+  template <typename Predicate>
+  unsigned int
+  ContactProblem::count_owned(const Predicate &predicate) const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += (c.owned && predicate(c));
+    return Utilities::MPI::sum(n, communicator());
+  }
+
   ContactProblem::Violations
   ContactProblem::violations() const
   {
@@ -31,11 +47,10 @@ namespace RestShape
             continue;
           v.worst = std::max(v.worst, std::abs(gap));
         }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
-    v.through = Utilities::MPI::sum(v.through, comm);
-    v.off     = Utilities::MPI::sum(v.off, comm);
-    v.worst   = Utilities::MPI::max(v.worst, comm);
+    const MPI_Comm comm = communicator();
+    v.through           = Utilities::MPI::sum(v.through, comm);
+    v.off               = Utilities::MPI::sum(v.off, comm);
+    v.worst             = Utilities::MPI::max(v.worst, comm);
     return v;
   }
 
@@ -70,21 +85,14 @@ namespace RestShape
   unsigned int
   ContactProblem::n_active() const
   {
-    unsigned int n = 0;
-    for (const Candidate &c : candidates)
-      n += (c.owned && c.active);
-    return Utilities::MPI::sum(
-      n, forward.dof_handler().get_triangulation().get_communicator());
+    return count_owned([](const Candidate &c) { return c.active; });
   }
 
   unsigned int
   ContactProblem::n_held() const
   {
-    unsigned int n = 0;
-    for (const Candidate &c : candidates)
-      n += (c.owned && c.active && c.held.size() > 1);
-    return Utilities::MPI::sum(
-      n, forward.dof_handler().get_triangulation().get_communicator());
+    return count_owned(
+      [](const Candidate &c) { return c.active && c.held.size() > 1; });
   }
 
   ContactProblem::Adhesion
@@ -103,11 +111,10 @@ namespace RestShape
           else
             push += force;
         }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
-    push              = Utilities::MPI::sum(push, comm);
-    unsigned int n    = 0;
-    double       pull = 0;
+    const MPI_Comm comm = communicator();
+    push                = Utilities::MPI::sum(push, comm);
+    unsigned int n      = 0;
+    double       pull   = 0;
     for (const double f : pulls)
       if (f > 1e-9 * push)
         {
@@ -129,29 +136,21 @@ namespace RestShape
           ++n;
           distance = std::max(distance, std::abs(c.gap));
         }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm = communicator();
     return {Utilities::MPI::sum(n, comm), Utilities::MPI::max(distance, comm)};
   }
 
   unsigned int
   ContactProblem::n_candidates() const
   {
-    unsigned int n = 0;
-    for (const Candidate &c : candidates)
-      n += c.owned;
-    return Utilities::MPI::sum(
-      n, forward.dof_handler().get_triangulation().get_communicator());
+    return count_owned([](const Candidate &) { return true; });
   }
 
   unsigned int
   ContactProblem::n_outside() const
   {
-    unsigned int n = 0;
-    for (const Candidate &c : candidates)
-      n += (c.owned && c.gap < -gap_tolerance);
-    return Utilities::MPI::sum(
-      n, forward.dof_handler().get_triangulation().get_communicator());
+    return count_owned(
+      [this](const Candidate &c) { return c.gap < -gap_tolerance; });
   }
 
   Tensor<1, 3>
@@ -161,8 +160,7 @@ namespace RestShape
     for (const Candidate &c : candidates)
       if (c.owned && c.active)
         force += reaction(c, raw_residual);
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm = communicator();
     for (unsigned int k = 0; k < 3; ++k)
       force[k] = Utilities::MPI::sum(force[k], comm);
     return force;
@@ -175,9 +173,7 @@ namespace RestShape
     for (const Candidate &c : candidates)
       if (c.owned && (c.eligible || !eligible_only))
         p = std::max(p, -c.gap);
-    return Utilities::MPI::max(
-             p, forward.dof_handler().get_triangulation().get_communicator()) +
-           0.;
+    return Utilities::MPI::max(p, communicator()) + 0.;
   }
 
   std::vector<double>
@@ -245,10 +241,9 @@ namespace RestShape
           low  = std::min(low, pressure[i]);
           high = std::max(high, pressure[i]);
         }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
-    low  = Utilities::MPI::min(low, comm);
-    high = Utilities::MPI::max(high, comm);
+    const MPI_Comm comm = communicator();
+    low                 = Utilities::MPI::min(low, comm);
+    high                = Utilities::MPI::max(high, comm);
     return high < low ? std::make_pair(0., 0.) : std::make_pair(low, high);
   }
 
@@ -264,17 +259,15 @@ namespace RestShape
           const Tensor<1, 3> r = c.node.position - point;
           radius = std::max(radius, (r - (r * axis) * axis).norm());
         }
-    return Utilities::MPI::max(
-      radius, forward.dof_handler().get_triangulation().get_communicator());
+    return Utilities::MPI::max(radius, communicator());
   }
 
   double
   ContactProblem::patch_radius(const Tensor<1, 3> &direction) const
   {
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
-    Tensor<1, 3> sum;
-    double       n = 0;
+    const MPI_Comm comm = communicator();
+    Tensor<1, 3>   sum;
+    double         n = 0;
     for (const Candidate &c : candidates)
       if (c.owned && c.active)
         {

@@ -84,6 +84,7 @@ namespace RestShape
     const double tol = parameters.solver.newton_tolerance;
     if (contact != nullptr)
       contact->begin_solve(d_ghost);
+    stats.cells_inverted = false;
 
     double reference = 0;
     // Inexact Newton: the previous step's residual and linear tolerance.
@@ -107,16 +108,16 @@ namespace RestShape
       mu = mu == 0 ? mu_start : 10 * mu;
       return mu <= mu_cap;
     };
-    const auto shift_failure = [&](const double       residual,
-                                   const std::string &inverted_text) {
+    // inverted: the step's line search met inverted cells (the last of
+    // them is in inverted_cells).
+    const auto shift_failure = [&](const double residual, const bool inverted) {
       return format("Newton stalls at |R|/|f| = %.3e: its steps stay "
                     "short even with the tangent's diagonal scaled by "
                     "1 + %.0e (the largest shift tried)",
                     residual / reference,
                     mu_cap) +
-             (inverted_text.empty() ?
-                std::string() :
-                "; the last shortened step: " + inverted_text);
+             (inverted ? "; the last shortened step: " + inverted_cells_text() :
+                         std::string());
     };
     tangent_type =
       chosen == TangentType::adaptive ? TangentType::consistent : chosen;
@@ -214,7 +215,6 @@ namespace RestShape
         bool         accepted        = false;
         double       trial_residual  = 0;
         unsigned int inverted_trials = 0;
-        std::string  inverted_text;
         for (unsigned int ls = 0; ls < line_search_trials && !accepted;
              ++ls, alpha *= 0.5)
           {
@@ -224,7 +224,6 @@ namespace RestShape
             if (!assemble(Assemble::residual))
               {
                 ++inverted_trials;
-                inverted_text = inverted_cells_text();
                 continue;
               }
             trial_residual = residual_condensed.l2_norm();
@@ -261,7 +260,7 @@ namespace RestShape
                     if (!raise())
                       {
                         stats.failure =
-                          shift_failure(trial_residual, inverted_text);
+                          shift_failure(trial_residual, inverted_trials > 0);
                         return false;
                       }
                   }
@@ -286,7 +285,8 @@ namespace RestShape
               {
                 if (!raise())
                   {
-                    stats.failure = shift_failure(residual, inverted_text);
+                    stats.failure =
+                      shift_failure(residual, inverted_trials > 0);
                     return false;
                   }
                 pcout << "      no step along this tangent helps: the "
@@ -310,13 +310,14 @@ namespace RestShape
               format("the line search could not reduce the residual "
                      "(|R|/|f| = %.3e)",
                      residual / reference);
-            if (inverted_trials > 0)
+            stats.cells_inverted = inverted_trials > 0;
+            if (stats.cells_inverted)
               stats.failure +=
                 format("; %.0f of its %.0f trial steps inverted cells, the "
                        "shortest of them ",
                        inverted_trials,
                        line_search_trials) +
-                inverted_text;
+                inverted_cells_text();
             return false;
           }
       }
@@ -391,10 +392,8 @@ namespace RestShape
             // section 4): every P1 case converged with the shift. Not where
             // the last increment failed because its steps invert cells (P2
             // at gravity x 10: the shift only took longer to fail).
-            const bool inverted =
-              stats.failure.find("inverted cells") != std::string::npos;
             if (parameters.discretization.tangent == TangentType::adaptive &&
-                parameters.solver.tangent_shift == 0 && !inverted)
+                parameters.solver.tangent_shift == 0 && !stats.cells_inverted)
               stats.failure += " (Solver/Tangent shift = 1e-3 may help)";
             pcout << "    Newton failed: " << stats.failure << std::endl;
             stats.fraction = steps.done;

@@ -48,14 +48,21 @@ echo "forward solves $solves; iteration 0 + accepted + rejected Anderson + 1 fai
 echo "ok: $(cat "$out.stderr")"
 
 hint="Solver/Tangent shift = 1e-3 may help"
-for shift in 0 1e-3; do
-  "$exe" --set "Output/Directory=$out/forward_$shift" --set "Discretization/Tangent=adaptive" \
-    --set "Solver/Tangent shift=$shift" --set "Solver/Maximum Newton iterations=2" \
-    --set "Solver/Maximum load step halvings=0" --set "Output/Write VTU=false" \
-    prm/cantilever.prm >"$out.forward.stdout" 2>"$out.stderr"
+# forward NAME SHIFT [--set ...]: a forward solve of the cantilever with the
+# adaptive tangent and no load halvings, expected to fail (exit code 2, one
+# line on stderr, written to $out.stderr).
+forward() {
+  local name=$1 shift=$2
+  shift 2
+  "$exe" --set "Output/Directory=$out/$name" --set "Discretization/Tangent=adaptive" \
+    --set "Solver/Tangent shift=$shift" --set "Solver/Maximum load step halvings=0" \
+    --set "Output/Write VTU=false" "$@" prm/cantilever.prm >"$out.$name.stdout" 2>"$out.stderr"
   code=$?
-  [ "$code" -eq 2 ] || fail "adaptive tangent, shift $shift: exit code $code, expected 2"
-  [ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "adaptive tangent, shift $shift: expected one line on stderr"
+  [ "$code" -eq 2 ] || fail "$name: exit code $code, expected 2"
+  [ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "$name: expected one line on stderr"
+}
+for shift in 0 1e-3; do
+  forward "forward_$shift" "$shift" --set "Solver/Maximum Newton iterations=2"
   if [ "$shift" = 0 ]; then
     grep -qF "$hint" "$out.stderr" || fail "no shift: the message does not suggest the tangent shift"
   else
@@ -64,14 +71,10 @@ for shift in 0 1e-3; do
 done
 echo "ok: the forward solve's message suggests the tangent shift only when it is off"
 
-"$exe" --set "Output/Directory=$out/stall" --set "Discretization/Polynomial degree=1" \
-  --set "Discretization/Tangent=adaptive" --set "Solver/Tangent shift=1e-3" \
-  --set "Solver/Maximum Newton iterations=200" --set "Solver/Maximum load step halvings=0" \
-  --set "Solver/Initial load steps=1" --set "Loads/Gravity=-981000, 0, 0" \
-  --set "Output/Write VTU=false" prm/cantilever.prm >"$out.stall.stdout" 2>"$out.stderr"
-code=$?
-[ "$code" -eq 2 ] || fail "stalled Newton: exit code $code, expected 2"
-[ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "stalled Newton: expected one line on stderr"
+# The cantilever pushed into its support at 10^5 g, in one increment.
+crush=(--set "Discretization/Polynomial degree=1" --set "Solver/Maximum Newton iterations=200"
+  --set "Solver/Initial load steps=1" --set "Loads/Gravity=-981000, 0, 0")
+forward stall 1e-3 "${crush[@]}"
 grep -qF "the largest shift tried" "$out.stderr" || fail "stalled Newton: the message does not name the shift"
 grep -qF "inverted (det F <= 0), e.g. label" "$out.stderr" ||
   fail "stalled Newton: the message does not name the inverted cells"
@@ -81,13 +84,7 @@ echo "stalled Newton: stopped after $steps steps: $(cat "$out.stderr")"
 grep -qiE 'nan|inf' "$out/stall/summary.json" && fail "NaN or infinity in summary.json"
 echo "ok: a stalled Newton with the shift stops at the largest shift"
 
-"$exe" --set "Output/Directory=$out/stall0" --set "Discretization/Polynomial degree=1" \
-  --set "Discretization/Tangent=adaptive" --set "Solver/Tangent shift=0" \
-  --set "Solver/Maximum Newton iterations=200" --set "Solver/Maximum load step halvings=0" \
-  --set "Solver/Initial load steps=1" --set "Loads/Gravity=-981000, 0, 0" \
-  --set "Output/Write VTU=false" prm/cantilever.prm >"$out.stall0.stdout" 2>"$out.stderr"
-code=$?
-[ "$code" -eq 2 ] || fail "inverted cells, no shift: exit code $code, expected 2"
+forward stall0 0 "${crush[@]}"
 grep -qF "trial steps inverted cells" "$out.stderr" || fail "inverted cells, no shift: the message does not name them"
 grep -qF "$hint" "$out.stderr" && fail "inverted cells, no shift: the message suggests the shift"
 echo "ok: $(cat "$out.stderr")"

@@ -244,6 +244,13 @@ namespace RestShape
     };
     Violations
     violations() const;
+    /// The mesh's MPI communicator.
+    MPI_Comm
+    communicator() const;
+    /// Owned candidates for which @p predicate holds, summed over the ranks.
+    template <typename Predicate>
+    unsigned int
+    count_owned(const Predicate &predicate) const;
 
     dealii::Point<3>
     position(const Candidate &c, const VectorType &d) const;

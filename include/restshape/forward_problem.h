@@ -58,6 +58,9 @@ namespace RestShape
     double       residual           = 0; // final, N
     double       reference          = 0; // norm of the external loads, N
     std::string  failure;                // why it did not converge
+    /// The last failed Newton solve failed because its line search's
+    /// trial steps inverted cells.
+    bool cells_inverted = false;
     /// Fraction of the way from the start to the target load and rest shape
     /// at which the state is in equilibrium: 1 when converged, less when
     /// the load-step halvings ran out part of the way (0: not even the
@@ -326,7 +329,8 @@ namespace RestShape
     double     total_energy = 0; // of the last assembly (J)
     // The last assembly that met an inverted cell (det F <= 0 or det G <=
     // 0 at a quadrature point): how many, and one of them (label, centre
-    // in the mesh, m), summed and chosen over all ranks.
+    // in the mesh, m), summed and chosen over all ranks. Assemblies without
+    // inverted cells leave it as it is.
     struct InvertedCells
     {
       unsigned int               count = 0;
