@@ -15,6 +15,89 @@ namespace RestShape
       std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * 1e3);
       return buffer;
     }
+
+    /**
+     * When the inverse iteration stops unconverged: divergence, stagnation,
+     * and runs of partial updates that gain nothing (their forward solves
+     * keep stopping short, typically where a cell would invert). Fed the
+     * error of every accepted iterate.
+     */
+    class StoppingRules
+    {
+    public:
+      StoppingRules(const double initial, const double tolerance)
+        : initial(initial)
+        , tolerance(tolerance)
+        , previous(initial)
+        , best(initial)
+      {}
+
+      /// The reason to stop after accepted iteration @p iteration with
+      /// error @p error, or "" to go on. @p partial: the update was taken
+      /// only up to @p fraction of it, the forward solve having stopped
+      /// for @p failure.
+      std::string
+      check(const unsigned int iteration,
+            const double       error,
+            const bool         partial,
+            const double       fraction,
+            const std::string &failure)
+      {
+        const std::string at = std::to_string(iteration);
+        increases            = (error > previous) ? increases + 1 : 0;
+        previous             = error;
+        if (error > 2 * initial)
+          return "diverged: the error grew from " + mm(initial) + " to " +
+                 mm(error) + " in " + at + " iterations";
+        if (increases >= 3)
+          return "diverged: the error grew in 3 iterations in a row, from "
+                 "its best " +
+                 mm(std::min(best, error)) + " to " + mm(error) +
+                 " at iteration " + at;
+        if (error < 0.99 * best)
+          {
+            best       = error;
+            since_best = 0;
+            fractions.clear();
+            return "";
+          }
+        ++since_best;
+        if (!partial)
+          fractions.clear();
+        else
+          {
+            char buffer[32];
+            std::snprintf(buffer, sizeof(buffer), "%.3g", fraction);
+            fractions.push_back(buffer);
+            if (fractions.size() >= max_partial)
+              {
+                std::string list;
+                for (const auto &f : fractions)
+                  list += (list.empty() ? "" : ", ") + f;
+                return "stalled: the forward solves of the last " +
+                       std::to_string(max_partial) +
+                       " updates reached equilibrium only part of the way (" +
+                       list +
+                       " of each) and the error did not improve on "
+                       "its best " +
+                       mm(best) + " (now " + mm(error) + ", iteration " + at +
+                       "); the last one stopped because " + failure;
+              }
+          }
+        if (since_best >= 10)
+          return "stagnated: the error has not improved by 1 % in 10 "
+                 "iterations (best " +
+                 mm(best) + ", tolerance " + mm(tolerance) + ")";
+        return "";
+      }
+
+    private:
+      static constexpr unsigned int max_partial = 3;
+      const double                  initial, tolerance;
+      double                        previous, best;
+      unsigned int                  since_best = 0, increases = 0;
+      std::vector<std::string>      fractions; // partial run without gain
+    };
   } // namespace
 
   InverseProblem::InverseProblem(const InverseParameters &parameters,
@@ -150,8 +233,8 @@ namespace RestShape
     write_output(first_step, 0);
 
     const double initial = measure(forward.nodal_norms(forward.displacement()));
-    double       previous = initial, best = initial;
-    unsigned int since_best = 0, increases = 0;
+    double       previous = initial;
+    StoppingRules stopping(initial, parameters.tolerance);
     if (initial <= parameters.tolerance)
       {
         result.converged = true;
@@ -276,25 +359,10 @@ namespace RestShape
             result.converged = true;
             return finish("");
           }
-        increases = (error > previous) ? increases + 1 : 0;
-        if (error > 2 * initial)
-          return finish("diverged: the error grew from " + mm(initial) +
-                        " to " + mm(error) + " in " +
-                        std::to_string(result.iterations) + " iterations");
-        if (increases >= 3)
-          return finish(
-            "diverged: the error grew in 3 iterations in a row, from its best " +
-            mm(std::min(best, error)) + " to " + mm(error) + " at iteration " +
-            std::to_string(result.iterations));
-        if (error < 0.99 * best)
-          {
-            best       = error;
-            since_best = 0;
-          }
-        else if (++since_best >= 10)
-          return finish(
-            "stagnated: the error has not improved by 1 % in 10 iterations (best " +
-            mm(best) + ", tolerance " + mm(parameters.tolerance) + ")");
+        const std::string reason = stopping.check(
+          result.iterations, error, partial, stats.fraction, stats.failure);
+        if (!reason.empty())
+          return finish(reason);
         previous = error;
       }
     return finish("not converged after " +

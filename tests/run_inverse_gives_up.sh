@@ -8,6 +8,8 @@
 # again: exit code 2, one line on stderr naming the cause, summary.json with
 # "converged": false and no NaN, no rest_shape.msh, and exactly one failed
 # forward solve beyond the accepted iterations and rejected Anderson steps.
+# At E = 50 kPa three partial updates in a row gain nothing: the iteration
+# stops as stalled at the third.
 # Then a forward solve that gives up (2 Newton steps, no load halvings) with
 # the adaptive tangent: its one stderr line suggests Solver/Tangent shift,
 # and does not once the shift is set. Last, a load no equilibrium can carry
@@ -45,6 +47,23 @@ solves=$(n forward_solves)
 expected=$(($(n inverse_iterations) + $(n rejected_anderson_steps) + 2))
 echo "forward solves $solves; iteration 0 + accepted + rejected Anderson + 1 failed = $expected"
 [ "$solves" -eq "$expected" ] || fail "the failed update was retried"
+echo "ok: $(cat "$out.stderr")"
+
+# At E = 50 kPa the forward solves of three updates in a row stop part of
+# the way without the error improving on its best: the iteration stops
+# there ("stalled"), not after 10 iterations without gain.
+"$exe" --set "Output/Directory=$out/stalled" --set "Discretization/Polynomial degree=1" \
+  --set "Materials/Young's modulus=50000" --set "Solver/Maximum Newton iterations=25" \
+  --set "Inverse problem/Enabled=true" --set "Output/Write VTU=false" \
+  prm/cantilever.prm >"$out.stalled.stdout" 2>"$out.stderr"
+code=$?
+[ "$code" -eq 2 ] || fail "stalled: exit code $code, expected 2"
+[ "$(wc -l <"$out.stderr")" -eq 1 ] || fail "stalled: expected exactly one line on stderr"
+grep -qF "stalled: the forward solves of the last 3 updates reached equilibrium only part of the way" \
+  "$out.stderr" || fail "stalled: stderr does not name the run of partial updates"
+partial=$(grep -c "that shorter update is taken" "$out.stalled.stdout")
+[ "$partial" -eq 3 ] || fail "stalled: $partial partial updates, expected the stop at the third"
+grep -qiE 'nan|inf' "$out/stalled/summary.json" && fail "stalled: NaN or infinity in summary.json"
 echo "ok: $(cat "$out.stderr")"
 
 hint="Solver/Tangent shift = 1e-3 may help"

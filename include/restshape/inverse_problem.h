@@ -57,8 +57,9 @@ namespace RestShape
    * out of load-step halvings part of the way, the fraction it reached is
    * taken as the update, and when it reached none the iteration stops;
    * divergence (error above twice the initial one, or growing for three
-   * iterations) and stagnation (no 1 % improvement of the best error in 10
-   * iterations) stop the iteration with the figures.
+   * iterations), stagnation (no 1 % improvement of the best error in 10
+   * iterations) and a stall (three partial updates in a row without such
+   * an improvement) stop the iteration with the figures.
    */
   class InverseProblem
   {
