@@ -520,11 +520,16 @@ namespace RestShape
                       "initial mesh).");
     prm.declare_entry("Estimator",
                       "kelly",
-                      Patterns::Selection("kelly"),
+                      Patterns::Selection("kelly|traction jump"),
                       "Error indicator, computed in every cycle (written per "
                       "cell as estimated_error in the VTU and in total to "
                       "convergence.csv): kelly = jumps of the gradient of the "
-                      "displacement from the rest shape across faces.");
+                      "displacement from the rest shape across faces; "
+                      "traction jump = jumps of the traction of the material "
+                      "law across faces, divided by Young's modulus, "
+                      "ignoring faces of fixed cells (right at material "
+                      "interfaces and rigid supports, where the exact "
+                      "gradient jumps).");
     prm.leave_subsection();
   }
 
@@ -537,6 +542,8 @@ namespace RestShape
       prm.get("Strategy") == "adaptive" ? Strategy::adaptive : Strategy::global;
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
+    estimator        = prm.get("Estimator") == "kelly" ? Estimator::kelly :
+                                                         Estimator::traction_jump;
     if (refine_fraction + coarsen_fraction > 1)
       throw InputError("",
                        "Adaptive refinement/Coarsen fraction",

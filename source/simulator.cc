@@ -447,11 +447,15 @@ namespace RestShape
 
     {
       TimerOutput::Scope scope(timer, "Error estimate");
-      estimate = estimate_error(*forward, u);
+      estimate = estimate_error(*forward, u, parameters.refinement.estimator);
     }
     summary.set("estimated_error_relative", estimate.relative);
-    pcout << "  Estimated error (Kelly, relative H1): " << estimate.relative
-          << std::endl;
+    pcout << "  Estimated error ("
+          << (parameters.refinement.estimator ==
+                  RefinementParameters::Estimator::kelly ?
+                "Kelly" :
+                "traction jump")
+          << ", relative H1): " << estimate.relative << std::endl;
 
     convergence_table.add_value("cycle", cycle);
     convergence_table.add_value("cells",

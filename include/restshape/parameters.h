@@ -161,8 +161,14 @@ namespace RestShape
       global,
       adaptive
     };
+    enum class Estimator
+    {
+      kelly,
+      traction_jump
+    };
     unsigned int cycles;
     Strategy     strategy;
+    Estimator    estimator        = Estimator::kelly;
     double       refine_fraction  = 0.3; // of the cells, largest indicators
     double       coarsen_fraction = 0.0; // of the cells, smallest indicators
 
