@@ -10,6 +10,9 @@
 # element:level, tetrahedra for P, hexahedra (each tetrahedron split into
 # four) for Q; the reference is a case of its own. Without SET the scene is
 # as in prm/brain.prm (skull contact, CSF pressure, elastic support).
+# Adaptive cases (hexahedra only): level aNk or aNt, N cycles refining 30 %
+# of the cells (Adaptive refinement/Refine fraction) by Kelly's indicator
+# (k) or the traction jump (t); the seconds are those of all N + 1 solves.
 #
 # usage: benchmarks/time_vs_error/brain.sh [--coarse]
 #   --coarse: P1 level 0 against P1 level 1 (the version run in the tests)
@@ -32,11 +35,18 @@ run() { # element:level
   local element=${1%%:*} level=${1##*:} cells=tetrahedra
   [[ $element == Q* ]] && cells=hexahedra
   local dir=$out/${element}_$level
+  local refine=(--set "Mesh/Global refinements=$level")
+  if [[ $level == a* ]]; then # aNk / aNt: N adaptive cycles, Kelly / traction jump
+    local estimator=kelly
+    [ "${level:2:1}" = t ] && estimator="traction jump"
+    refine=(--set "Adaptive refinement/Strategy=adaptive" --set "Adaptive refinement/Cycles=${level:1:1}"
+      --set "Adaptive refinement/Estimator=$estimator")
+  fi
   rm -rf "$dir"
   "$exe" --set "Output/Directory=$dir" --set "Output/Write VTU=false" --set "Output/Write nodal CSV=true" \
     --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
     --set "Solver/Linear solver=cg-amg" --set "Mesh/Cell type=$cells" \
-    --set "Discretization/Polynomial degree=${element:1:1}" --set "Mesh/Global refinements=$level" \
+    --set "Discretization/Polynomial degree=${element:1:1}" "${refine[@]}" \
     ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 ||
     { echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"; return 1; }
 }
