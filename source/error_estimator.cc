@@ -12,9 +12,10 @@ namespace RestShape
   namespace
   {
     /// Traction-jump indicators (see estimate_error()) of the owned cells.
-    /// Every face is integrated from both sides, each cell taking only its
-    /// own share; the neighbour's values are matched to the cell's
-    /// quadrature points by position, whatever the faces' orientations.
+    /// Each cell integrates the whole jump over each of its faces from its
+    /// own side (as Kelly's indicator, every face counts for both of its
+    /// cells); the neighbour's values are matched to the cell's quadrature
+    /// points by position, whatever the faces' orientations.
     class TractionJump
     {
     public:
