@@ -66,14 +66,16 @@ namespace RestShape
           fractions.clear();
         else
           {
-            char buffer[32];
-            std::snprintf(buffer, sizeof(buffer), "%.3g", fraction);
-            fractions.push_back(buffer);
+            fractions.push_back(fraction);
             if (fractions.size() >= max_partial)
               {
                 std::string list;
-                for (const auto &f : fractions)
-                  list += (list.empty() ? "" : ", ") + f;
+                for (const double f : fractions)
+                  {
+                    char buffer[32];
+                    std::snprintf(buffer, sizeof(buffer), "%.3g", f);
+                    list += (list.empty() ? "" : ", ") + std::string(buffer);
+                  }
                 return "stalled: the forward solves of the last " +
                        std::to_string(max_partial) +
                        " updates reached equilibrium only part of the way (" +
@@ -91,12 +93,19 @@ namespace RestShape
         return "";
       }
 
+      /// The error of the last accepted iterate (the initial one before any).
+      double
+      last() const
+      {
+        return previous;
+      }
+
     private:
       static constexpr unsigned int max_partial = 3;
       const double                  initial, tolerance;
       double                        previous, best;
       unsigned int                  since_best = 0, increases = 0;
-      std::vector<std::string>      fractions; // partial run without gain
+      std::vector<double>           fractions; // partial run without gain
     };
   } // namespace
 
@@ -233,7 +242,6 @@ namespace RestShape
     write_output(first_step, 0);
 
     const double initial = measure(forward.nodal_norms(forward.displacement()));
-    double       previous = initial;
     StoppingRules stopping(initial, parameters.tolerance);
     if (initial <= parameters.tolerance)
       {
@@ -289,7 +297,7 @@ namespace RestShape
                     "invert " +
                     std::to_string(n_bad) + " cells (iteration " +
                     std::to_string(result.iterations + 1) + ", error " +
-                    mm(previous) + ")");
+                    mm(stopping.last()) + ")");
                 candidate = w;
                 candidate.add(beta, f);
                 pcout << "  The update would invert " << n_bad
@@ -331,7 +339,7 @@ namespace RestShape
             partial     = true;
             force_plain = true;
           }
-        else if (!stats.converged || (accelerated && error > previous))
+        else if (!stats.converged || (accelerated && error > stopping.last()))
           {
             // Back to the last iterate; the plain update follows.
             forward.set_state(d, w, load);
@@ -339,7 +347,7 @@ namespace RestShape
               contact->set_state(contact_state);
             pcout << "  Anderson step rejected ("
                   << (stats.converged ?
-                        "error " + mm(error) + " > " + mm(previous) :
+                        "error " + mm(error) + " > " + mm(stopping.last()) :
                         "forward solve failed: " + stats.failure)
                   << "): plain update" << std::endl;
             ++result.rejected_steps;
@@ -363,11 +371,10 @@ namespace RestShape
           result.iterations, error, partial, stats.fraction, stats.failure);
         if (!reason.empty())
           return finish(reason);
-        previous = error;
       }
     return finish("not converged after " +
                   std::to_string(parameters.max_iterations) +
-                  " iterations (error " + mm(previous) + ", tolerance " +
+                  " iterations (error " + mm(stopping.last()) + ", tolerance " +
                   mm(parameters.tolerance) + ")");
   }
 } // namespace RestShape

@@ -24,16 +24,6 @@ using namespace RestShape::Test;
 
 namespace
 {
-  Tensor2
-  rotation(const Tensor<1, 3> &axis_angle)
-  {
-    // Rodrigues' formula.
-    const double  angle = axis_angle.norm();
-    const Tensor2 K     = skew_matrix(axis_angle / angle);
-    return Tensor2(unit_symmetric_tensor<3>()) + std::sin(angle) * K +
-           (1 - std::cos(angle)) * K * K;
-  }
-
   double
   tangent_error(const CorotationalLaw &law,
                 const Tensor2         &F,

@@ -45,6 +45,16 @@ namespace RestShape::Test
     failures += !ok;
   }
 
+  /// The rotation by |axis_angle| radians about axis_angle (Rodrigues).
+  inline Tensor2
+  rotation(const dealii::Tensor<1, 3> &axis_angle)
+  {
+    const double  angle = axis_angle.norm();
+    const Tensor2 K     = skew_matrix(axis_angle / angle);
+    return Tensor2(dealii::unit_symmetric_tensor<3>()) + std::sin(angle) * K +
+           (1 - std::cos(angle)) * K * K;
+  }
+
   inline int
   exit_code()
   {
