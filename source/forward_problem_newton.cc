@@ -409,4 +409,33 @@ namespace RestShape
     return stats;
   }
 
+  SolveStatistics
+  ForwardProblem::solve_from(const VectorType &guess,
+                             const LoadState  &load,
+                             const VectorType &rest)
+  {
+    set_state(guess, rest, load);
+    if (contact != nullptr)
+      contact->reset();
+    SolveStatistics first;
+    if (newton(first))
+      {
+        first.converged  = true;
+        first.fraction   = 1;
+        first.load_steps = 1;
+        first.failure.clear();
+        return first;
+      }
+    pcout << "    Newton from the initial guess failed (" << first.failure
+          << "); starting again from the unloaded state" << std::endl;
+    set_state(zero_vector(), zero_vector(), LoadState());
+    if (contact != nullptr)
+      contact->reset();
+    SolveStatistics stats = solve(load, rest);
+    stats.newton_iterations += first.newton_iterations;
+    stats.linear_iterations += first.linear_iterations;
+    stats.active_set_changes += first.active_set_changes;
+    return stats;
+  }
+
 } // namespace RestShape

@@ -644,21 +644,34 @@ namespace RestShape
   }
 
   void
-  LabelledMesh::refine_global()
+  LabelledMesh::refine_global(const std::function<void()> &before_change)
   {
     if (is_simplex())
       {
+        if (before_change)
+          before_change();
         description = refine_tetrahedra(description);
         create_triangulation();
+        return;
       }
-    else
-      tria->refine_global(1);
+    tria->set_all_refine_flags();
+    execute_refinement(before_change);
   }
 
   void
-  LabelledMesh::refine_adaptive(const Vector<float> &indicators,
-                                const double         refine_fraction,
-                                const double         coarsen_fraction)
+  LabelledMesh::execute_refinement(const std::function<void()> &before_change)
+  {
+    tria->prepare_coarsening_and_refinement();
+    if (before_change)
+      before_change();
+    tria->execute_coarsening_and_refinement();
+  }
+
+  void
+  LabelledMesh::refine_adaptive(const Vector<float>         &indicators,
+                                const double                 refine_fraction,
+                                const double                 coarsen_fraction,
+                                const std::function<void()> &before_change)
   {
     Assert(!is_simplex(), ExcInternalError());
     // The rule of deal.II's serial GridRefinement::
@@ -691,7 +704,7 @@ namespace RestShape
           else if (n_coarsen > 0 && value <= all[all.size() - n_coarsen])
             cell->set_coarsen_flag();
         }
-    tria->execute_coarsening_and_refinement();
+    execute_refinement(before_change);
   }
 
   Triangulation<3> &

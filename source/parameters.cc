@@ -530,6 +530,17 @@ namespace RestShape
                       "ignoring faces of fixed cells (right at material "
                       "interfaces and rigid supports, where the exact "
                       "gradient jumps).");
+    prm.declare_entry("Transfer solution",
+                      "true",
+                      Patterns::Bool(),
+                      "true: every cycle after the first starts from the "
+                      "previous cycle's solution interpolated to the refined "
+                      "mesh (the displacement as Newton's initial guess at "
+                      "the full load, and for an inverse run the rest shape "
+                      "as its first iterate); if Newton fails from there, the "
+                      "cycle starts again from the unloaded mesh. false: every "
+                      "cycle starts from the unloaded mesh (and an inverse "
+                      "run from the target shape).");
     prm.leave_subsection();
   }
 
@@ -540,10 +551,11 @@ namespace RestShape
     cycles = prm.get_integer("Cycles");
     strategy =
       prm.get("Strategy") == "adaptive" ? Strategy::adaptive : Strategy::global;
-    refine_fraction  = prm.get_double("Refine fraction");
-    coarsen_fraction = prm.get_double("Coarsen fraction");
-    estimator        = prm.get("Estimator") == "kelly" ? Estimator::kelly :
-                                                         Estimator::traction_jump;
+    refine_fraction   = prm.get_double("Refine fraction");
+    coarsen_fraction  = prm.get_double("Coarsen fraction");
+    estimator         = prm.get("Estimator") == "kelly" ? Estimator::kelly :
+                                                          Estimator::traction_jump;
+    transfer_solution = prm.get_bool("Transfer solution");
     if (refine_fraction + coarsen_fraction > 1)
       throw InputError("",
                        "Adaptive refinement/Coarsen fraction",

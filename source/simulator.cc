@@ -1,6 +1,7 @@
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
 #include <restshape/simulator.h>
+#include <restshape/state_transfer.h>
 
 #include <iomanip>
 
@@ -38,27 +39,20 @@ namespace RestShape
     VectorType rest = initial_rest_shape();
     prepare_output();
 
-    SolveStatistics stats;
+    SolveStatistics           stats;
+    std::optional<VectorType> guess;
     for (unsigned int cycle = 0; cycle <= parameters.refinement.cycles; ++cycle)
       {
         if (cycle > 0)
-          {
-            TimerOutput::Scope scope(timer, "Refinement");
-            if (parameters.refinement.strategy ==
-                RefinementParameters::Strategy::adaptive)
-              mesh->refine_adaptive(estimate.indicators,
-                                    parameters.refinement.refine_fraction,
-                                    parameters.refinement.coarsen_fraction);
-            else
-              mesh->refine_global();
-            setup_problems();
-            rest = forward->zero_vector();
-          }
+          refine(rest, guess);
         pcout << "Cycle " << cycle << ": "
               << mesh->triangulation().n_global_active_cells() << " cells, "
-              << forward->dof_handler().n_dofs() << " DoFs" << std::endl;
-        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest) :
-                                             solve_forward(rest);
+              << forward->dof_handler().n_dofs() << " DoFs"
+              << (guess ? ", starting from the previous cycle's solution" : "")
+              << std::endl;
+        const VectorType *start = guess ? &*guess : nullptr;
+        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
+                                             solve_forward(rest, start);
         postprocess(cycle, stats);
       }
     if (parameters.prestress_comparison.enabled)
@@ -162,6 +156,38 @@ namespace RestShape
       }
   }
 
+  void
+  Simulator::refine(VectorType &rest, std::optional<VectorType> &guess)
+  {
+    TimerOutput::Scope             scope(timer, "Refinement");
+    std::unique_ptr<StateTransfer> transfer;
+    const auto                     prepare = [&]() {
+      if (parameters.refinement.transfer_solution)
+        transfer = std::make_unique<StateTransfer>(
+          *forward,
+          std::vector<const VectorType *>{&forward->displacement(),
+                                          &forward->rest_displacement()});
+    };
+    if (parameters.refinement.strategy ==
+        RefinementParameters::Strategy::adaptive)
+      mesh->refine_adaptive(estimate.indicators,
+                            parameters.refinement.refine_fraction,
+                            parameters.refinement.coarsen_fraction,
+                            prepare);
+    else
+      mesh->refine_global(prepare);
+    setup_problems();
+    guess.reset();
+    if (!transfer)
+      {
+        rest = forward->zero_vector();
+        return;
+      }
+    std::vector<VectorType> fields = transfer->interpolate(*forward);
+    guess                          = std::move(fields[0]);
+    rest                           = std::move(fields[1]);
+  }
+
   VectorType
   Simulator::initial_rest_shape() const
   {
@@ -197,12 +223,18 @@ namespace RestShape
   }
 
   SolveStatistics
-  Simulator::solve_forward(const VectorType &rest)
+  Simulator::solve_forward(const VectorType &rest, const VectorType *guess)
   {
-    forward->set_state(forward->zero_vector(),
-                       forward->zero_vector(),
-                       LoadState());
-    const SolveStatistics stats = forward->solve(forward->scene_load(), rest);
+    SolveStatistics stats;
+    if (guess != nullptr)
+      stats = forward->solve_from(*guess, forward->scene_load(), rest);
+    else
+      {
+        forward->set_state(forward->zero_vector(),
+                           forward->zero_vector(),
+                           LoadState());
+        stats = forward->solve(forward->scene_load(), rest);
+      }
     pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
           << " in " << stats.newton_iterations << " Newton iterations, "
           << stats.load_steps << " load step(s)" << std::endl;
@@ -217,7 +249,8 @@ namespace RestShape
 
   SolveStatistics
   Simulator::solve_inverse(const unsigned int cycle,
-                           const VectorType  &initial_rest)
+                           const VectorType  &initial_rest,
+                           const VectorType  *guess)
   {
     InverseProblem inverse(parameters.inverse,
                            *forward,
@@ -226,7 +259,7 @@ namespace RestShape
                            timer,
                            pcout,
                            wall_timer);
-    inverse_result = inverse.run(initial_rest, next_step);
+    inverse_result = inverse.run(initial_rest, next_step, guess);
     next_step += inverse.records().size();
 
     for (const InverseIterationRecord &r : inverse.records())

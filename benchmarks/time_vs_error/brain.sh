@@ -13,12 +13,16 @@
 # Adaptive cases (hexahedra only): level aNk or aNt, N cycles refining 30 %
 # of the cells (Adaptive refinement/Refine fraction) by Kelly's indicator
 # (k) or the traction jump (t); the seconds are those of all N + 1 solves.
+# A trailing r (aNkr) restarts every cycle from the unloaded mesh
+# (Adaptive refinement/Transfer solution = false) instead of from the
+# previous cycle's solution.
 #
 # usage: benchmarks/time_vs_error/brain.sh [--coarse]
 #   --coarse: P1 level 0 against P1 level 1 (the version run in the tests)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/time_vs_error),
 # CASES ("P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0"), REFERENCE (P2:2),
-# SET (one extra 'Section/Parameter=value', e.g. 'Contact/Obstacle file=').
+# SET (extra 'Section/Parameter=value' settings separated by '|', e.g.
+# 'Contact/Obstacle file=|Solver/Tangent shift=1e-3').
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/time_vs_error}/brain
@@ -39,15 +43,22 @@ run() { # element:level
   if [[ $level == a* ]]; then # aNk / aNt: N adaptive cycles, Kelly / traction jump
     local estimator=kelly
     [ "${level:2:1}" = t ] && estimator="traction jump"
+    local transfer=true
+    [ "${level:3:1}" = r ] && transfer=false
     refine=(--set "Adaptive refinement/Strategy=adaptive" --set "Adaptive refinement/Cycles=${level:1:1}"
-      --set "Adaptive refinement/Estimator=$estimator")
+      --set "Adaptive refinement/Estimator=$estimator" --set "Adaptive refinement/Transfer solution=$transfer")
+  fi
+  local extra=() setting
+  if [ -n "${SET:-}" ]; then
+    IFS='|' read -ra settings <<<"$SET"
+    for setting in "${settings[@]}"; do extra+=(--set "$setting"); done
   fi
   rm -rf "$dir"
   "$exe" --set "Output/Directory=$dir" --set "Output/Write VTU=false" --set "Output/Write nodal CSV=true" \
     --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
     --set "Solver/Linear solver=cg-amg" --set "Mesh/Cell type=$cells" \
     --set "Discretization/Polynomial degree=${element:1:1}" "${refine[@]}" \
-    ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 ||
+    "${extra[@]}" prm/brain.prm >"$dir.log" 2>&1 ||
     { echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"; return 1; }
 }
 
@@ -67,7 +78,11 @@ def load(case):
     for r in csv.DictReader(open(f"{d}/nodes.csv")):
         key = tuple(round(float(r[k]), 4) for k in ('x_mm', 'y_mm', 'z_mm'))
         nodes[key] = [float(r[k]) for k in ('u_x_mm', 'u_y_mm', 'u_z_mm')]
-    return nodes, json.load(open(f"{d}/summary.json"))
+    summary = json.load(open(f"{d}/summary.json"))
+    # Newton iterations of every cycle ("6 + 21"), from convergence.csv.
+    cycles = [r['newton_iterations'] for r in csv.DictReader(open(f"{d}/convergence.csv"))]
+    summary['newton_iterations'] = ' + '.join(cycles)
+    return nodes, summary
 # The coarse mesh's vertices: the nodes of meshes/brain_coarse.msh.
 vertices = []
 with open('meshes/brain_coarse.msh') as f:

@@ -135,6 +135,17 @@ namespace RestShape
     SolveStatistics
     solve(const LoadState &load, const VectorType &rest);
 
+    /**
+     * Equilibrium under @p load with rest displacement @p rest (owned
+     * vectors) by Newton's method at the full load from the displacement
+     * @p guess (e.g. the previous refinement cycle's solution); if that
+     * fails, solve() from the unloaded state. The statistics count both.
+     */
+    SolveStatistics
+    solve_from(const VectorType &guess,
+               const LoadState  &load,
+               const VectorType &rest);
+
     /// The load state of the paper's scene: gravity and the CSF pressure.
     LoadState
     scene_load() const;

@@ -75,11 +75,15 @@ namespace RestShape
     /**
      * Run from the rest displacement @p initial_rest (owned; zero: the
      * target is the first rest shape). VTU output steps are numbered from
-     * @p first_step. Leaves the forward problem at the last accepted
-     * equilibrium.
+     * @p first_step. If @p guess is given (owned; e.g. the equilibrium
+     * displacement of the previous refinement cycle), the first forward
+     * solve starts Newton from it at the full load. Leaves the forward
+     * problem at the last accepted equilibrium.
      */
     InverseResult
-    run(const VectorType &initial_rest, const unsigned int first_step);
+    run(const VectorType  &initial_rest,
+        const unsigned int first_step,
+        const VectorType  *guess = nullptr);
 
     const std::vector<InverseIterationRecord> &
     records() const;

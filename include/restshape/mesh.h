@@ -147,27 +147,33 @@ namespace RestShape
     /**
      * Refine every cell once: tetrahedra by red refinement of the mesh
      * description (the triangulation is rebuilt: DoFHandlers must be
-     * re-initialised), hexahedra by deal.II.
+     * re-initialised; children of cell i are cells 8i..8i+7), hexahedra by
+     * deal.II. @p before_change, if given, is called once the cells are
+     * marked and before the mesh changes (to prepare a StateTransfer).
      */
     void
-    refine_global();
+    refine_global(const std::function<void()> &before_change = {});
 
     /**
      * Hexahedra only: refine the @p refine_fraction of the cells with the
      * largest @p indicators (one per active cell) and coarsen the
      * @p coarsen_fraction with the smallest; hanging nodes are constrained
-     * by the forward problem.
+     * by the forward problem. @p before_change as for refine_global().
      */
     void
     refine_adaptive(const dealii::Vector<float> &indicators,
                     const double                 refine_fraction,
-                    const double                 coarsen_fraction);
+                    const double                 coarsen_fraction,
+                    const std::function<void()> &before_change = {});
 
     const MeshParameters parameters;
 
   private:
     void
     create_triangulation();
+    /// Hexahedra: smooth the marks, call @p before_change, refine.
+    void
+    execute_refinement(const std::function<void()> &before_change);
 
     MeshDescription                           description; // tetrahedra only
     std::unique_ptr<dealii::Triangulation<3>> tria;

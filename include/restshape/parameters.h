@@ -168,9 +168,10 @@ namespace RestShape
     };
     unsigned int cycles;
     Strategy     strategy;
-    Estimator    estimator        = Estimator::kelly;
-    double       refine_fraction  = 0.3; // of the cells, largest indicators
-    double       coarsen_fraction = 0.0; // of the cells, smallest indicators
+    Estimator    estimator         = Estimator::kelly;
+    double       refine_fraction   = 0.3;  // of the cells, largest indicators
+    double       coarsen_fraction  = 0.0;  // of the cells, smallest indicators
+    bool         transfer_solution = true; // start from the previous cycle
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

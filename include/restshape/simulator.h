@@ -21,6 +21,7 @@
 #include <restshape/verification.h>
 
 #include <memory>
+#include <optional>
 
 namespace RestShape
 {
@@ -55,10 +56,20 @@ namespace RestShape
     initial_rest_shape() const;
     void
     prepare_output();
+    /// Refine (cycle > 0), set up again and, with Adaptive
+    /// refinement/Transfer solution, carry the displacement into @p guess
+    /// and the rest displacement into @p rest; otherwise @p rest = 0 and
+    /// @p guess is empty.
+    void
+    refine(VectorType &rest, std::optional<VectorType> &guess);
+    /// @p guess: Newton's initial displacement at the full load (nullptr:
+    /// load from the unloaded mesh).
     SolveStatistics
-    solve_forward(const VectorType &rest);
+    solve_forward(const VectorType &rest, const VectorType *guess);
     SolveStatistics
-    solve_inverse(const unsigned int cycle, const VectorType &initial_rest);
+    solve_inverse(const unsigned int cycle,
+                  const VectorType  &initial_rest,
+                  const VectorType  *guess);
     void
     compare_prestress();
     void
