@@ -184,8 +184,20 @@ namespace RestShape
         return;
       }
     std::vector<VectorType> fields = transfer->interpolate(*forward);
-    guess                          = std::move(fields[0]);
-    rest                           = std::move(fields[1]);
+    unsigned int            n_bad  = 0;
+    if (!forward->rest_shape_is_valid(fields[1], n_bad))
+      {
+        // The rest shape was checked at the coarse mesh's quadrature
+        // points only.
+        pcout << "  The previous rest shape inverts " << n_bad
+              << " cells of the refined mesh: starting from the unloaded "
+                 "mesh and the target shape"
+              << std::endl;
+        rest = forward->zero_vector();
+        return;
+      }
+    guess = std::move(fields[0]);
+    rest  = std::move(fields[1]);
   }
 
   VectorType

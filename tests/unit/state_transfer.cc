@@ -10,7 +10,10 @@
 //    by their index): a linear and a quadratic field.
 //
 // Two different fields go through at once (as the displacement and the
-// rest displacement do). Runs on 1 and on 2 MPI ranks (p4est and the shared
+// rest displacement do).
+// 4. ForwardProblem::solve_from() falls back to loading from zero when
+//    Newton fails from its initial guess. Runs on 1 and on 2 MPI ranks (p4est
+//    and the shared
 // triangulation; tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
@@ -194,5 +197,37 @@ main(int argc, char **argv)
                      linear,
                      [&](auto callback) { s.mesh->refine_global(callback); });
     }
+
+  // 4. ForwardProblem::solve_from from a guess that inverts every cell
+  // (u = -2 X: F = -I): Newton fails at once, the solve starts again from
+  // the unloaded mesh and must end where solve() from there ends.
+  {
+    Scene                 s(scene("meshes/column_hex.msh", "hexahedra", 1) +
+            "subsection Materials\n set Young's modulus = 10000\n set "
+                            "Poisson's ratio = 0.3\nend\nsubsection Boundary conditions\n "
+                            "set Fixed labels = 2\nend\nsubsection Loads\n set Gravity = 0, "
+                            "0, -9.81\nend\n");
+    ForwardProblem       &f         = *s.forward;
+    const LoadState       load      = f.scene_load();
+    const SolveStatistics from_zero = f.solve(load, f.zero_vector());
+    const VectorType      expected  = f.owned_copy(f.displacement());
+    const VectorType      bad =
+      nodal_values(f, [](const Point<3> &X) { return -2 * Tensor<1, 3>(X); });
+    const SolveStatistics fallback   = f.solve_from(bad, load, f.zero_vector());
+    VectorType            difference = f.owned_copy(f.displacement());
+    difference -= expected;
+    check_between("solve_from an inverting guess converges",
+                  fallback.converged,
+                  1,
+                  1);
+    check_below("  and ends where solve() from zero ends (m)",
+                difference.linfty_norm(),
+                1e-9 * expected.linfty_norm());
+    // The failed attempt stopped at its first assembly, before a step.
+    check_between("  with as many Newton steps as solve() from zero",
+                  fallback.newton_iterations,
+                  from_zero.newton_iterations,
+                  from_zero.newton_iterations);
+  }
   return exit_code();
 }
