@@ -410,24 +410,27 @@ namespace RestShape
   }
 
   SolveStatistics
-  ForwardProblem::solve_from(const VectorType &guess,
+  ForwardProblem::solve_from(const VectorType *guess,
                              const LoadState  &load,
                              const VectorType &rest)
   {
-    set_state(guess, rest, load);
-    if (contact != nullptr)
-      contact->reset();
     SolveStatistics first;
-    if (newton(first))
+    if (guess != nullptr)
       {
-        first.converged  = true;
-        first.fraction   = 1;
-        first.load_steps = 1;
-        first.failure.clear();
-        return first;
+        set_state(*guess, rest, load);
+        if (contact != nullptr)
+          contact->reset();
+        if (newton(first))
+          {
+            first.converged  = true;
+            first.fraction   = 1;
+            first.load_steps = 1;
+            first.failure.clear();
+            return first;
+          }
+        pcout << "    Newton from the initial guess failed (" << first.failure
+              << "); starting again from the unloaded state" << std::endl;
       }
-    pcout << "    Newton from the initial guess failed (" << first.failure
-          << "); starting again from the unloaded state" << std::endl;
     set_state(zero_vector(), zero_vector(), LoadState());
     if (contact != nullptr)
       contact->reset();

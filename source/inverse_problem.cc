@@ -230,16 +230,7 @@ namespace RestShape
     // Iteration 0: the forward problem from the initial rest shape (the
     // target itself unless a rest shape was given), loaded from zero or
     // started from the guess.
-    SolveStatistics stats;
-    if (guess != nullptr)
-      stats = forward.solve_from(*guess, load, initial_rest);
-    else
-      {
-        forward.set_state(forward.zero_vector(),
-                          forward.zero_vector(),
-                          LoadState());
-        stats = forward.solve(load, initial_rest);
-      }
+    SolveStatistics stats = forward.solve_from(guess, load, initial_rest);
     ++result.forward_solves;
     result.newton_iterations += stats.newton_iterations;
     if (!stats.converged)

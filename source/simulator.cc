@@ -178,11 +178,9 @@ namespace RestShape
       mesh->refine_global(prepare);
     setup_problems();
     guess.reset();
+    rest = forward->zero_vector();
     if (!transfer)
-      {
-        rest = forward->zero_vector();
-        return;
-      }
+      return;
     std::vector<VectorType> fields = transfer->interpolate(*forward);
     unsigned int            n_bad  = 0;
     if (!forward->rest_shape_is_valid(fields[1], n_bad))
@@ -193,7 +191,6 @@ namespace RestShape
               << " cells of the refined mesh: starting from the unloaded "
                  "mesh and the target shape"
               << std::endl;
-        rest = forward->zero_vector();
         return;
       }
     guess = std::move(fields[0]);
@@ -237,16 +234,8 @@ namespace RestShape
   SolveStatistics
   Simulator::solve_forward(const VectorType &rest, const VectorType *guess)
   {
-    SolveStatistics stats;
-    if (guess != nullptr)
-      stats = forward->solve_from(*guess, forward->scene_load(), rest);
-    else
-      {
-        forward->set_state(forward->zero_vector(),
-                           forward->zero_vector(),
-                           LoadState());
-        stats = forward->solve(forward->scene_load(), rest);
-      }
+    const SolveStatistics stats =
+      forward->solve_from(guess, forward->scene_load(), rest);
     pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
           << " in " << stats.newton_iterations << " Newton iterations, "
           << stats.load_steps << " load step(s)" << std::endl;
@@ -372,15 +361,10 @@ namespace RestShape
     u1 -= d_eq;
     const auto prestressed = forward->nodal_norms(u1);
 
-    forward->set_state(forward->zero_vector(),
-                       forward->zero_vector(),
-                       LoadState());
-    if (contact)
-      contact->reset();
     LoadState extra_only;
     extra_only.acceleration = extra;
     const SolveStatistics s2 =
-      forward->solve(extra_only, forward->zero_vector());
+      forward->solve_from(nullptr, extra_only, forward->zero_vector());
     check(s2, "not pre-stressed");
     const auto unstressed = forward->nodal_norms(forward->displacement());
 

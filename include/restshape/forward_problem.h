@@ -139,10 +139,11 @@ namespace RestShape
      * Equilibrium under @p load with rest displacement @p rest (owned
      * vectors) by Newton's method at the full load from the displacement
      * @p guess (e.g. the previous refinement cycle's solution); if that
-     * fails, solve() from the unloaded state. The statistics count both.
+     * fails, or without a guess (nullptr), solve() from the unloaded state
+     * (contact released). The statistics count both attempts.
      */
     SolveStatistics
-    solve_from(const VectorType &guess,
+    solve_from(const VectorType *guess,
                const LoadState  &load,
                const VectorType &rest);
 

@@ -51,15 +51,8 @@ namespace
         s.mesh->refine_adaptive(marks, 0.3, 0);
         s.forward->setup();
       }
-    ForwardProblem &f = *s.forward;
-    VectorType      u = f.zero_vector();
-    for (const Node &node : f.owned_nodes())
-      {
-        const Tensor<1, 3> value = field(node.position);
-        for (unsigned int c = 0; c < 3; ++c)
-          u[node.dofs[c]] = value[c];
-      }
-    u.compress(VectorOperation::insert);
+    ForwardProblem  &f = *s.forward;
+    const VectorType u = nodal_field(f, field);
     return {
       estimate_error(f, u, RefinementParameters::Estimator::kelly).relative,
       estimate_error(f, u, RefinementParameters::Estimator::traction_jump)

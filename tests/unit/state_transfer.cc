@@ -29,20 +29,6 @@ namespace
 {
   using Field = std::function<Tensor<1, 3>(const Point<3> &)>;
 
-  VectorType
-  nodal_values(const ForwardProblem &f, const Field &field)
-  {
-    VectorType v = f.zero_vector();
-    for (const Node &node : f.owned_nodes())
-      {
-        const Tensor<1, 3> value = field(node.position);
-        for (unsigned int c = 0; c < 3; ++c)
-          v[node.dofs[c]] = value[c];
-      }
-    v.compress(VectorOperation::insert);
-    return v;
-  }
-
   /// Largest nodal difference between @p v and @p field, over all ranks.
   double
   max_difference(const ForwardProblem &f,
@@ -70,7 +56,7 @@ namespace
                  const bool expect_coarsening = false)
   {
     ForwardProblem &f = *s.forward;
-    f.set_state(nodal_values(f, first), nodal_values(f, second), LoadState());
+    f.set_state(nodal_field(f, first), nodal_field(f, second), LoadState());
     const auto n_before = f.dof_handler().n_dofs();
     check_below(name + ", before",
                 max_difference(f, f.displacement(), first),
@@ -212,8 +198,8 @@ main(int argc, char **argv)
     const SolveStatistics from_zero = f.solve(load, f.zero_vector());
     const VectorType      expected  = f.owned_copy(f.displacement());
     const VectorType      bad =
-      nodal_values(f, [](const Point<3> &X) { return -2 * Tensor<1, 3>(X); });
-    const SolveStatistics fallback   = f.solve_from(bad, load, f.zero_vector());
+      nodal_field(f, [](const Point<3> &X) { return -2 * Tensor<1, 3>(X); });
+    const SolveStatistics fallback = f.solve_from(&bad, load, f.zero_vector());
     VectorType            difference = f.owned_copy(f.displacement());
     difference -= expected;
     check_between("solve_from an inverting guess converges",

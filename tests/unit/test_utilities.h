@@ -55,6 +55,22 @@ namespace RestShape::Test
            (1 - std::cos(angle)) * K * K;
   }
 
+  /// The owned vector with the value @p field(X) at every node X of @p f.
+  template <typename Field>
+  inline VectorType
+  nodal_field(const ForwardProblem &f, const Field &field)
+  {
+    VectorType v = f.zero_vector();
+    for (const Node &node : f.owned_nodes())
+      {
+        const dealii::Tensor<1, 3> value = field(node.position);
+        for (unsigned int c = 0; c < 3; ++c)
+          v[node.dofs[c]] = value[c];
+      }
+    v.compress(dealii::VectorOperation::insert);
+    return v;
+  }
+
   inline int
   exit_code()
   {
