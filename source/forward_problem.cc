@@ -16,6 +16,8 @@
 #include <restshape/forward_problem.h>
 #include <restshape/input_error.h>
 
+#include <limits>
+
 namespace RestShape
 {
   using namespace dealii;
@@ -309,6 +311,8 @@ namespace RestShape
     d_ghost      = d;
     w_ghost      = w;
     current_load = new_load;
+    // Not known until the new state is assembled (potential_energy()).
+    total_energy = std::numeric_limits<double>::quiet_NaN();
   }
 
   VectorType
@@ -442,6 +446,12 @@ namespace RestShape
     for (unsigned int c = 0; c < 3; ++c)
       reaction[c] = Utilities::MPI::sum(reaction[c], comm);
     return reaction;
+  }
+
+  double
+  ForwardProblem::potential_energy() const
+  {
+    return total_energy;
   }
 
   Tensor<1, 3>

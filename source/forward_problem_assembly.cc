@@ -220,9 +220,11 @@ namespace RestShape
               }
           }
 
-    // Dead loads: their potential is -f_ext . d.
+    // Dead loads: their potential is -f_ext . (d - w), the work done from
+    // the rest shape (f_ext does not depend on d or w).
     for (unsigned int i = 0; i < n_dofs; ++i)
-      copy.energy -= copy.cell_external(i) * d_buffer(copy.dofs[i]);
+      copy.energy -= copy.cell_external(i) *
+                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
   }
 
   bool

@@ -431,6 +431,7 @@ namespace RestShape
       summary.set("relative_residual", stats.residual / stats.reference);
     summary.set("max_displacement_mm", max_u);
     summary.set("mean_displacement_mm", mean_u);
+    summary.set("potential_energy_J", forward->potential_energy());
     if (!parameters.inverse.enabled && !parameters.mesh.rest_shape_file.empty())
       {
         // Started from a rest shape: how far the equilibrium is from the
@@ -496,13 +497,15 @@ namespace RestShape
                                        double(forward->dof_handler().n_dofs()),
                                        estimate.relative,
                                        double(stats.newton_iterations),
-                                       max_u};
+                                       max_u,
+                                       forward->potential_energy()};
     std::vector<std::string> header = {"cycle",
                                        "n_cells",
                                        "n_dofs",
                                        "estimated_error",
                                        "newton_iterations",
-                                       "max_displacement_mm"};
+                                       "max_displacement_mm",
+                                       "potential_energy_J"};
     std::vector<std::string> rated;
     const auto               add_errors = [&](const ExactDisplacement &e,
                                 const VectorType        &field,
@@ -564,7 +567,8 @@ namespace RestShape
     pcout << "  Displacement: max " << max_u << " mm, mean " << mean_u
           << " mm; force balance "
           << (external + reaction + contact_force + support_force).norm()
-          << " N of " << external.norm() << " N" << std::endl;
+          << " N of " << external.norm() << " N; potential energy "
+          << forward->potential_energy() << " J" << std::endl;
     if (parameters.boundary.support_stiffness > 0)
       pcout << "  Elastic support: force " << support_force << " N"
             << std::endl;

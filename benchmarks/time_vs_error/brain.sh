@@ -6,7 +6,8 @@
 # mesh's vertices as nodes and the displacements are compared there, node
 # by node, without interpolation (Output/Write nodal CSV).
 # Error: root mean square over the coarse vertices of |u - u_ref| (mm), its
-# maximum, and the RMS relative to the RMS of |u_ref|. Cases are
+# maximum, the RMS relative to the RMS of |u_ref|, and the total potential
+# energy (J; of two equilibria the lower is preferred, doc/model.md). Cases are
 # element:level, tetrahedra for P, hexahedra (each tetrahedron split into
 # four) for Q; the reference is a case of its own. Without SET the scene is
 # as in prm/brain.prm (skull contact, CSF pressure, elastic support).
@@ -99,12 +100,14 @@ missing = [v for v in vertices if v not in ref]
 if missing:
     raise SystemExit(f"{len(missing)} coarse vertices not found among the reference's nodes")
 ref_rms = math.sqrt(sum(sum(c * c for c in ref[v]) for v in vertices) / len(vertices))
-rows = [('element', 'level', 'n_dofs', 'seconds', 'newton_iterations', 'rms_error_mm', 'max_error_mm', 'relative_rms_error')]
+rows = [('element', 'level', 'n_dofs', 'seconds', 'newton_iterations', 'rms_error_mm', 'max_error_mm', 'relative_rms_error',
+         'potential_energy_J')]
 print(f"reference {reference}: {ref_summary['n_dofs']} DoFs, {ref_summary['wall_seconds']:.1f} s, "
-      f"RMS displacement at the {len(vertices)} coarse vertices {ref_rms:.4f} mm")
+      f"RMS displacement at the {len(vertices)} coarse vertices {ref_rms:.4f} mm, "
+      f"potential energy {ref_summary['potential_energy_J']:.6g} J")
 print()
-print('| element | level | DoFs | seconds | Newton iterations | RMS error (mm) | max error (mm) | relative RMS error |')
-print('| --- | --- | --- | --- | --- | --- | --- | --- |')
+print('| element | level | DoFs | seconds | Newton iterations | RMS error (mm) | max error (mm) | relative RMS error | potential energy (J) |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- | --- |')
 for case in cases:
     try:
         nodes, s = load(case)
@@ -113,9 +116,11 @@ for case in cases:
     e = [math.dist(nodes[v], ref[v]) for v in vertices]
     rms = math.sqrt(sum(x * x for x in e) / len(e))
     element, level = case.split(':')
-    rows.append((element, level, s['n_dofs'], s['wall_seconds'], s['newton_iterations'], rms, max(e), rms / ref_rms))
+    energy = s['potential_energy_J']
+    rows.append((element, level, s['n_dofs'], s['wall_seconds'], s['newton_iterations'], rms, max(e), rms / ref_rms,
+                 energy))
     print(f"| {element} | {level} | {s['n_dofs']} | {s['wall_seconds']:.1f} | {s['newton_iterations']} | "
-          f"{rms:.3g} | {max(e):.3g} | {rms / ref_rms:.3g} |")
+          f"{rms:.3g} | {max(e):.3g} | {rms / ref_rms:.3g} | {energy:.6g} |")
 with open(f"{out}/brain.csv", 'w') as f:
     csv.writer(f).writerows(rows)
 PY

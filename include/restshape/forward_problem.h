@@ -238,6 +238,19 @@ namespace RestShape
     dealii::Tensor<1, 3>
     support_reaction() const;
     /**
+     * Total potential energy of the last assembled state (after solve():
+     * the final state), in J: the strain energy over the rest shape, plus
+     * the elastic support's k/2 |d - w|^2 over its faces, minus the work
+     * f_ext . (d - w) of the dead loads (gravity, CSF pressure) from the
+     * rest shape. Zero in the rest shape; Newton's residual is its negative
+     * gradient. A
+     * stable equilibrium is a local minimum: of two equilibria of the same
+     * scene and mesh, the one with the lower energy is the one the body
+     * prefers. NaN after set_state() until the next assembly.
+     */
+    double
+    potential_energy() const;
+    /**
      * Assemble at the current state (for tests and diagnostics): the raw
      * residual and, if @p with_tangent, the tangent (Dirichlet rows
      * condensed). Returns false if a cell is inverted.
