@@ -17,6 +17,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <numeric>
 
 namespace RestShape
@@ -533,6 +534,13 @@ namespace RestShape
   {
     MeshDescription mesh = read_gmsh(prm.file, prm.length_unit);
     check_mesh(mesh, prm.file);
+    // On the mesh as read (before any split into hexahedra).
+    gap.first = std::numeric_limits<double>::infinity();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const SurfaceGap g = narrowest_surface_gap(mesh, 0);
+        gap                = {g.width, g.location};
+      }
     sort_along_hilbert_curve(mesh);
     const bool file_is_tet = mesh.cells[0].vertices.size() == 4;
     if (prm.cell_type == CellType::tetrahedra && !file_is_tet)
@@ -738,6 +746,12 @@ namespace RestShape
     for (const auto &[label, n] : counts)
       result.insert(label);
     return result;
+  }
+
+  std::pair<double, Point<3>>
+  LabelledMesh::narrowest_gap() const
+  {
+    return gap;
   }
 
   double

@@ -1,3 +1,7 @@
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <restshape/mesh_pieces.h>
 
 #include <algorithm>
@@ -150,5 +154,95 @@ namespace RestShape
     for (const auto &[edge, count] : n_faces)
       n_pinched += count > 2;
     return n_pinched;
+  }
+
+  SurfaceGap
+  narrowest_surface_gap(const MeshDescription &mesh, const double threshold)
+  {
+    using dealii::Point;
+    using dealii::Tensor;
+    using K         = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Triangles = std::vector<K::Triangle_3>;
+    using Primitive =
+      CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
+    using Tree       = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+    const auto point = [&](const unsigned int v) {
+      const Point<3> &x = mesh.vertices[v];
+      return K::Point_3(x[0], x[1], x[2]);
+    };
+
+    // Boundary faces as triangles (a quadrilateral's corners in deal.II's
+    // lexicographic order 0 1 2 3 give the triangles 0 1 3 and 0 3 2), with
+    // their face's centroid and outward normal.
+    Triangles                 triangles;
+    std::vector<unsigned int> face_of_triangle;
+    std::vector<Point<3>>     centroids;
+    std::vector<Tensor<1, 3>> normals;
+    for (const auto &[face, cells] : faces_of(mesh))
+      if (cells.size() == 1)
+        {
+          const auto [c, f]           = cells[0];
+          const auto               &v = mesh.cells[c].vertices;
+          std::vector<unsigned int> corners;
+          for (const unsigned int i :
+               (v.size() == 4 ? tet_faces : hex_faces)[f])
+            corners.push_back(v[i]);
+          Point<3> centroid, cell_centroid;
+          for (const unsigned int i : corners)
+            centroid += mesh.vertices[i] / double(corners.size());
+          for (const unsigned int i : v)
+            cell_centroid += mesh.vertices[i] / double(v.size());
+          const Tensor<1, 3> a =
+            mesh.vertices[corners[1]] - mesh.vertices[corners[0]];
+          const Tensor<1, 3> b =
+            mesh.vertices[corners.back()] - mesh.vertices[corners[0]];
+          Tensor<1, 3> n = cross_product_3d(a, b);
+          if (n * (centroid - cell_centroid) < 0)
+            n = -n;
+          const unsigned int id = centroids.size();
+          centroids.push_back(centroid);
+          normals.push_back(n / n.norm());
+          triangles.emplace_back(point(corners[0]),
+                                 point(corners[1]),
+                                 point(corners[corners.size() == 3 ? 2 : 3]));
+          face_of_triangle.push_back(id);
+          if (corners.size() == 4)
+            {
+              triangles.emplace_back(point(corners[0]),
+                                     point(corners[3]),
+                                     point(corners[2]));
+              face_of_triangle.push_back(id);
+            }
+        }
+
+    SurfaceGap gap;
+    if (triangles.empty())
+      return gap;
+    Tree tree(triangles.cbegin(), triangles.cend());
+    for (unsigned int id = 0; id < centroids.size(); ++id)
+      {
+        const Point<3>    &x = centroids[id];
+        const Tensor<1, 3> n = normals[id];
+        const K::Ray_3     ray(K::Point_3(x[0], x[1], x[2]),
+                           K::Vector_3(n[0], n[1], n[2]));
+        // The face's own triangles are skipped (the ray starts on them).
+        const auto hit =
+          tree.first_intersection(ray, [&](const Triangles::const_iterator t) {
+            return face_of_triangle[t - triangles.cbegin()] == id;
+          });
+        if (!hit)
+          continue;
+        const K::Point_3 *p = boost::get<K::Point_3>(&hit->first);
+        if (p == nullptr) // the ray runs inside a face: no gap across
+          continue;
+        const double width = x.distance(Point<3>(p->x(), p->y(), p->z()));
+        gap.n_narrow += width < threshold;
+        if (width < gap.width)
+          {
+            gap.width    = width;
+            gap.location = x;
+          }
+      }
+    return gap;
   }
 } // namespace RestShape

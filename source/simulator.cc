@@ -84,6 +84,11 @@ namespace RestShape
     for (const auto &[label, n] : mesh->label_counts())
       pcout << ' ' << label << " (" << n << " coarse cells)";
     pcout << std::endl;
+    const auto [gap, where] = mesh->narrowest_gap();
+    if (std::isfinite(gap))
+      pcout << "  narrowest gap between folds of the surface: " << gap * 1e3
+            << " mm, from the face at " << where * 1e3
+            << " mm (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
   }
 
   void

@@ -129,6 +129,16 @@ namespace RestShape
     double
     diameter() const;
 
+    /**
+     * Narrowest gap between folds of the surface of the mesh as read (m,
+     * infinity if none) and where it starts (narrowest_surface_gap() in
+     * mesh_pieces.h; computed on rank 0 only, infinity elsewhere). Thin
+     * flaps of tissue border such gaps; refined solutions there converge
+     * slowly and may have several equilibria.
+     */
+    std::pair<double, dealii::Point<3>>
+    narrowest_gap() const;
+
     /// Smallest cell diameter of the active mesh (m).
     double
     minimum_cell_diameter() const;
@@ -179,6 +189,7 @@ namespace RestShape
     std::unique_ptr<dealii::Triangulation<3>> tria;
     std::map<Label, unsigned int>             counts;
     double                                    bounding_diameter;
+    std::pair<double, dealii::Point<3>>       gap;
   };
 } // namespace RestShape
 

@@ -9,6 +9,7 @@
 
 #include <restshape/mesh.h>
 
+#include <limits>
 #include <vector>
 
 namespace RestShape
@@ -51,6 +52,30 @@ namespace RestShape
    */
   unsigned int
   n_pinched_boundary_edges(const MeshDescription &mesh);
+
+  struct SurfaceGap
+  {
+    /// Narrowest width (mesh units); infinity if no ray meets the surface.
+    double width = std::numeric_limits<double>::infinity();
+    /// Centroid of the surface face it starts from.
+    dealii::Point<3> location;
+    /// Surface faces whose gap is narrower than the threshold asked for.
+    unsigned int n_narrow = 0;
+  };
+
+  /**
+   * The narrowest gap between folds of the surface of @p mesh (tetrahedra
+   * or hexahedra): from the centroid of every boundary face, a ray along
+   * its outward normal (away from its cell's centroid) to the first other
+   * boundary face it meets (CGAL AABB tree; quadrilaterals split in two
+   * triangles). A sulcus narrower than the cells leaves thin flaps of
+   * tissue, one cell thick, on both sides; their knife edges are where
+   * solutions on refined meshes do not converge and have more than one
+   * equilibrium (doc/benchmarks.md). Faces narrower than @p threshold are
+   * counted.
+   */
+  SurfaceGap
+  narrowest_surface_gap(const MeshDescription &mesh, const double threshold);
 } // namespace RestShape
 
 #endif

@@ -228,6 +228,18 @@ main(int argc, char **argv)
                       "")
                 << std::endl;
 
+      // The mesh is in mm here.
+      const SurfaceGap gap =
+        narrowest_surface_gap(mesh, options.facet_distance);
+      if (std::isfinite(gap.width))
+        std::cout << "narrowest gap between folds of the surface: " << gap.width
+                  << " mm, from the face at " << gap.location << " mm; "
+                  << gap.n_narrow
+                  << " surface faces face another fold closer than the facet "
+                     "distance (thin flaps of tissue border such gaps; "
+                     "--close-sulci fills them)"
+                  << std::endl;
+
       const MeshQuality                    q = mesh_quality(mesh);
       std::map<unsigned int, unsigned int> n_per_label;
       for (const auto &cell : mesh.cells)

@@ -10,6 +10,9 @@
 //  4. Pinched boundary edges: none where cells share faces or only a
 //     vertex; one where two tetrahedra, or two hexahedra, share only an
 //     edge.
+//  5. Gaps between folds of the surface: none on a convex body; a U of
+//     cubes, its slot 1 wide and then 0.3; the committed coarse brain
+//     against a Python ray caster written independently.
 #include <restshape/mesh_pieces.h>
 
 #include "test_utilities.h"
@@ -123,6 +126,57 @@ main()
   hexes.cells.pop_back();
   check_below("pinched edges of two face-joined hexahedra",
               n_pinched_boundary_edges(hexes),
+              0);
+
+  // Gaps between folds of the surface. Two face-joined cubes (convex): no
+  // ray from the surface meets it again.
+  check_below("gap faces of a convex body",
+              narrowest_surface_gap(hexes, 10).n_narrow,
+              0);
+  // A U of five cubes: the arms [0,1]x[1,2] and [2,3]x[1,2] face each
+  // other across a slot 1 wide.
+  hexes.cells = {hex(0, 0, 0), hex(1, 0, 0), hex(2, 0, 0), hex(0, 1, 0)};
+  hexes.cells.push_back(hex(2, 1, 0));
+  const SurfaceGap slot = narrowest_surface_gap(hexes, 1.5);
+  check_below("U: slot width - 1", std::abs(slot.width - 1), 1e-12);
+  check_below("U: faces across the slot - 2",
+              std::abs(int(slot.n_narrow) - 2),
+              0);
+  check_below("U: gap on an arm's inner face (x = 1 or 2, y = 1.5, z = 0.5)",
+              std::min(std::abs(slot.location[0] - 1),
+                       std::abs(slot.location[0] - 2)) +
+                std::abs(slot.location[1] - 1.5) +
+                std::abs(slot.location[2] - 0.5),
+              1e-12);
+  // Narrow the slot to 0.3: the right arm's inner face moves to x = 1.3
+  // (the base cubes below it become skewed, still valid).
+  for (Point<3> &x : hexes.vertices)
+    if (x[0] == 2 && x[1] >= 1)
+      x[0] = 1.3;
+  check_below("U narrowed: slot width - 0.3",
+              std::abs(narrowest_surface_gap(hexes, 1.5).width - 0.3),
+              1e-12);
+
+  // Tetrahedra: the committed coarse brain. Its narrowest gap (above a
+  // flap at the base of the left frontal lobe) was measured independently
+  // with a Python ray caster: 1.344288 mm from the face at
+  // (-6.2077, 11.3087, -28.2529) mm; 17 faces below 3 mm (two of them hit
+  // the surface on an edge shared by two triangles).
+  const MeshDescription brain     = read_gmsh("meshes/brain_coarse.msh", 1e-3);
+  const SurfaceGap      brain_gap = narrowest_surface_gap(brain, 3e-3);
+  std::cout << "brain: narrowest gap " << brain_gap.width * 1e3 << " mm at "
+            << brain_gap.location * 1e3 << " mm, " << brain_gap.n_narrow
+            << " faces below 3 mm" << std::endl;
+  check_below("brain: narrowest gap - 1.344288 mm (mm)",
+              std::abs(brain_gap.width * 1e3 - 1.344288),
+              1e-5);
+  check_below("brain: its location (mm)",
+              brain_gap.location.distance(Point<3>(-6.2077, 11.3087, -28.2529) *
+                                          1e-3) *
+                1e3,
+              1e-3);
+  check_below("brain: faces below 3 mm - 17",
+              std::abs(int(brain_gap.n_narrow) - 17),
               0);
   return exit_code();
 }
