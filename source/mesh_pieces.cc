@@ -53,6 +53,27 @@ namespace RestShape
       return faces;
     }
 
+    /// The boundary faces of @p mesh: each with its cell and its corners (a
+    /// triangle's three, or a quadrilateral's four in deal.II's
+    /// lexicographic order).
+    std::vector<std::pair<unsigned int, std::vector<unsigned int>>>
+    boundary_faces(const MeshDescription &mesh)
+    {
+      std::vector<std::pair<unsigned int, std::vector<unsigned int>>> result;
+      for (const auto &[face, cells] : faces_of(mesh))
+        if (cells.size() == 1)
+          {
+            const auto [c, f]           = cells[0];
+            const auto               &v = mesh.cells[c].vertices;
+            std::vector<unsigned int> corners;
+            for (const unsigned int i :
+                 (v.size() == 4 ? tet_faces : hex_faces)[f])
+              corners.push_back(v[i]);
+            result.emplace_back(c, corners);
+          }
+      return result;
+    }
+
     unsigned int
     root(std::vector<unsigned int> &parent, unsigned int c)
     {
@@ -125,31 +146,24 @@ namespace RestShape
   n_pinched_boundary_edges(const MeshDescription &mesh)
   {
     std::map<std::pair<unsigned int, unsigned int>, unsigned int> n_faces;
-    for (const auto &[face, cells] : faces_of(mesh))
-      if (cells.size() == 1)
-        {
-          // The edges of the face: a triangle's three, or a quadrilateral's
-          // four in deal.II's lexicographic order (0-1, 1-3, 3-2, 2-0).
-          const auto [c, f]           = cells[0];
-          const auto               &v = mesh.cells[c].vertices;
-          std::vector<unsigned int> corners;
-          for (const unsigned int i :
-               (v.size() == 4 ? tet_faces : hex_faces)[f])
-            corners.push_back(v[i]);
-          const std::vector<std::pair<unsigned int, unsigned int>> edges =
-            corners.size() == 3 ?
-              std::vector<std::pair<unsigned int, unsigned int>>{
-                {corners[0], corners[1]},
-                {corners[1], corners[2]},
-                {corners[2], corners[0]}} :
-              std::vector<std::pair<unsigned int, unsigned int>>{
-                {corners[0], corners[1]},
-                {corners[1], corners[3]},
-                {corners[3], corners[2]},
-                {corners[2], corners[0]}};
-          for (auto [a, b] : edges)
-            ++n_faces[{std::min(a, b), std::max(a, b)}];
-        }
+    for (const auto &[c, corners] : boundary_faces(mesh))
+      {
+        // The edges of the face: a triangle's three, or a quadrilateral's
+        // four in deal.II's lexicographic order (0-1, 1-3, 3-2, 2-0).
+        const std::vector<std::pair<unsigned int, unsigned int>> edges =
+          corners.size() == 3 ?
+            std::vector<std::pair<unsigned int, unsigned int>>{
+              {corners[0], corners[1]},
+              {corners[1], corners[2]},
+              {corners[2], corners[0]}} :
+            std::vector<std::pair<unsigned int, unsigned int>>{
+              {corners[0], corners[1]},
+              {corners[1], corners[3]},
+              {corners[3], corners[2]},
+              {corners[2], corners[0]}};
+        for (auto [a, b] : edges)
+          ++n_faces[{std::min(a, b), std::max(a, b)}];
+      }
     unsigned int n_pinched = 0;
     for (const auto &[edge, count] : n_faces)
       n_pinched += count > 2;
@@ -178,42 +192,36 @@ namespace RestShape
     std::vector<unsigned int> face_of_triangle;
     std::vector<Point<3>>     centroids;
     std::vector<Tensor<1, 3>> normals;
-    for (const auto &[face, cells] : faces_of(mesh))
-      if (cells.size() == 1)
-        {
-          const auto [c, f]           = cells[0];
-          const auto               &v = mesh.cells[c].vertices;
-          std::vector<unsigned int> corners;
-          for (const unsigned int i :
-               (v.size() == 4 ? tet_faces : hex_faces)[f])
-            corners.push_back(v[i]);
-          Point<3> centroid, cell_centroid;
-          for (const unsigned int i : corners)
-            centroid += mesh.vertices[i] / double(corners.size());
-          for (const unsigned int i : v)
-            cell_centroid += mesh.vertices[i] / double(v.size());
-          const Tensor<1, 3> a =
-            mesh.vertices[corners[1]] - mesh.vertices[corners[0]];
-          const Tensor<1, 3> b =
-            mesh.vertices[corners.back()] - mesh.vertices[corners[0]];
-          Tensor<1, 3> n = cross_product_3d(a, b);
-          if (n * (centroid - cell_centroid) < 0)
-            n = -n;
-          const unsigned int id = centroids.size();
-          centroids.push_back(centroid);
-          normals.push_back(n / n.norm());
-          triangles.emplace_back(point(corners[0]),
-                                 point(corners[1]),
-                                 point(corners[corners.size() == 3 ? 2 : 3]));
-          face_of_triangle.push_back(id);
-          if (corners.size() == 4)
-            {
-              triangles.emplace_back(point(corners[0]),
-                                     point(corners[3]),
-                                     point(corners[2]));
-              face_of_triangle.push_back(id);
-            }
-        }
+    for (const auto &[c, corners] : boundary_faces(mesh))
+      {
+        const auto &v = mesh.cells[c].vertices;
+        Point<3>    centroid, cell_centroid;
+        for (const unsigned int i : corners)
+          centroid += mesh.vertices[i] / double(corners.size());
+        for (const unsigned int i : v)
+          cell_centroid += mesh.vertices[i] / double(v.size());
+        const Tensor<1, 3> a =
+          mesh.vertices[corners[1]] - mesh.vertices[corners[0]];
+        const Tensor<1, 3> b =
+          mesh.vertices[corners.back()] - mesh.vertices[corners[0]];
+        Tensor<1, 3> n = cross_product_3d(a, b);
+        if (n * (centroid - cell_centroid) < 0)
+          n = -n;
+        const unsigned int id = centroids.size();
+        centroids.push_back(centroid);
+        normals.push_back(n / n.norm());
+        triangles.emplace_back(point(corners[0]),
+                               point(corners[1]),
+                               point(corners[corners.size() == 3 ? 2 : 3]));
+        face_of_triangle.push_back(id);
+        if (corners.size() == 4)
+          {
+            triangles.emplace_back(point(corners[0]),
+                                   point(corners[3]),
+                                   point(corners[2]));
+            face_of_triangle.push_back(id);
+          }
+      }
 
     SurfaceGap gap;
     if (triangles.empty())
