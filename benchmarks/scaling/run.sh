@@ -6,7 +6,9 @@
 # AMG-preconditioned CG iterations per Newton step (flat = linear cost),
 # peak memory (max RSS, GNU time), where the time goes (TimerOutput), and the
 # log-log slope of time against DoFs; then the largest forward case on 1 and
-# 2 MPI ranks. Meshes are made by meshes/brain.sh (medium: 6 mm cells, fine:
+# 2 MPI ranks, and on 1 rank with one thread (DEAL_II_NUM_THREADS=1): a single
+# rank assembles with one thread per core, two ranks with one thread each,
+# so the speed-ups printed at the end separate threads from MPI. Meshes are made by meshes/brain.sh (medium: 6 mm cells, fine:
 # 3 mm) into $OUT/meshes.
 #
 # usage: benchmarks/scaling/run.sh [--coarse]
@@ -41,10 +43,11 @@ mesh_file() {
 }
 source "$(dirname "$0")/../common.sh"
 
-run() { # name ranks mesh[+refinements] degree inverse
+run() { # name ranks mesh[+refinements] degree inverse [threads]
   local dir=$out/$1 ranks=$2 launch=() refinements=0
   [[ $3 == *+* ]] && refinements=${3##*+}
-  [ "$ranks" -gt 1 ] && launch=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
+  [ -n "${6:-}" ] && launch=(env DEAL_II_NUM_THREADS="$6" OPENBLAS_NUM_THREADS="$6")
+  [ "$ranks" -gt 1 ] && launch+=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
   rm -rf "$dir"
   /usr/bin/time -f "%M" -o "$dir.rss" "${launch[@]}" "$exe" --set "Output/Directory=$dir" \
     --set "Mesh/File=${3%+*}" --set "Mesh/Global refinements=$refinements" --set "Discretization/Polynomial degree=$4" \
@@ -88,9 +91,13 @@ done
 largest=${TWO_RANKS:-$largest}
 level=${largest%%:*}
 degree=${largest##*:}
+run "forward_${level}_P${degree}_1thread" 1 "$(mesh_spec "$level")" "$degree" false 1 || status=1
 run "forward_${level}_P${degree}_2ranks" 2 "$(mesh_spec "$level")" "$degree" false || status=1
 echo
-awk -F, '$1 ~ /^forward/ && $2 == 1 { x[++n] = log($3); y[n] = log($4) }
+awk -F, -v c="forward_${level}_P${degree}" '$1 == c { t2 = $4 } $1 == c "_1thread" { t1 = $4 } $1 == c "_2ranks" { tr = $4 }
+  END { if (t1 > 0 && t2 > 0 && tr > 0)
+          printf "speed-up over 1 rank with 1 thread: 1 rank with 2 threads %.2fx, 2 ranks %.2fx\n", t1 / t2, t1 / tr }' "$out/scaling.csv"
+awk -F, '$1 ~ /^forward/ && $1 !~ /_1thread$/ && $2 == 1 { x[++n] = log($3); y[n] = log($4) }
   END { if (n > 1) { for (i = 1; i <= n; ++i) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }
         printf "log-log slope of forward time against DoFs: %.2f (%d meshes)\n", (n * sxy - sx * sy) / (n * sxx - sx * sx), n } }' "$out/scaling.csv"
 exit $status
