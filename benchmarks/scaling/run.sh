@@ -4,7 +4,7 @@
 # mesh and element, with CG + ML AMG (Solver/Linear solver = cg-amg) and no
 # VTU output. Reports DoFs, wall time, time per DoF, Newton iterations,
 # AMG-preconditioned CG iterations per Newton step (flat = linear cost),
-# peak memory (max RSS, GNU time), where the time goes (TimerOutput), and the
+# peak memory (max RSS by GNU time, summed over the MPI ranks), where the time goes (TimerOutput), and the
 # log-log slope of time against DoFs; then the largest forward case on 1 and
 # 2 MPI ranks, and on 1 rank with one thread (DEAL_II_NUM_THREADS=1): a single
 # rank assembles with one thread per core, two ranks with one thread each,
@@ -48,20 +48,23 @@ run() { # name ranks mesh[+refinements] degree inverse [threads]
   [[ $3 == *+* ]] && refinements=${3##*+}
   [ -n "${6:-}" ] && launch=(env DEAL_II_NUM_THREADS="$6" OPENBLAS_NUM_THREADS="$6")
   [ "$ranks" -gt 1 ] && launch+=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
-  rm -rf "$dir"
-  /usr/bin/time -f "%M" -o "$dir.rss" "${launch[@]}" "$exe" --set "Output/Directory=$dir" \
+  rm -rf "$dir" "$dir.rss"
+  # GNU time around mpirun would report the largest rank's peak, not the
+  # sum: each rank appends its own peak (kB) to $dir.rss.
+  "${launch[@]}" /usr/bin/time -f "%M" -a -o "$dir.rss" "$exe" --set "Output/Directory=$dir" \
     --set "Mesh/File=${3%+*}" --set "Mesh/Global refinements=$refinements" --set "Discretization/Polynomial degree=$4" \
     --set "Inverse problem/Enabled=$5" --set "Prestress comparison/Enabled=false" \
     --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" \
     ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
   local s=$dir/summary.json
-  local dofs seconds
+  local dofs seconds rss
   dofs=$(value n_dofs "$s")
+  rss=$(awk '{ kb += $1 } END { printf "%d", kb / 1024 }' "$dir.rss")
   seconds=$(value wall_seconds "$s")
-  echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$(($(cat "$dir.rss") / 1024)),$(timer_share Assembly "$dir.log"),$(timer_share 'Linear solve' "$dir.log"),$(timer_share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
+  echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$rss,$(timer_share Assembly "$dir.log"),$(timer_share 'Linear solve' "$dir.log"),$(timer_share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
   printf '| %s | %s | %s | %.1f | %.2g | %s | %s | %s | %s | %s / %s / %s |\n' "$1" "$ranks" "$dofs" "$seconds" \
     "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$(value newton_iterations "$s")" \
-    "$(if [ "$5" = true ]; then echo -; else printf '%.1f' "$(value linear_iterations_per_newton_step "$s")"; fi)" "$(($(cat "$dir.rss") / 1024))" \
+    "$(if [ "$5" = true ]; then echo -; else printf '%.1f' "$(value linear_iterations_per_newton_step "$s")"; fi)" "$rss" \
     "$(value inverse_iterations "$s")" "$(timer_share Assembly "$dir.log")" "$(timer_share 'Linear solve' "$dir.log")" \
     "$(timer_share 'Contact search' "$dir.log")"
 }
