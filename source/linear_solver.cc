@@ -150,7 +150,7 @@ namespace RestShape
     data.elliptic              = true;
     data.higher_order_elements = (degree > 1);
     data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
+    data.aggregation_threshold = parameters.amg_aggregation_threshold;
 
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;

@@ -363,6 +363,16 @@ namespace RestShape
       "Measured on the brain with Inexact Newton: linear solves 0.2-0.4x "
       "of rebuild with the fixed tolerance, the same solution.");
     prm.declare_entry(
+      "AMG aggregation threshold",
+      "0",
+      Patterns::Double(0, 1),
+      "cg-amg only. ML's aggregation threshold: when the AMG groups nodes "
+      "into aggregates, couplings weaker than this (relative to the "
+      "diagonal) are dropped. 0 keeps every coupling. Measured on the "
+      "brain (doc/benchmarks.md section 2): 0 needs fewer CG iterations "
+      "than 0.02 (the value of deal.II's tutorials and RestShape's until "
+      "2026-11-25), more so the finer the mesh, the same solution.");
+    prm.declare_entry(
       "Tangent shift",
       "0",
       Patterns::Double(0, 1),
@@ -398,20 +408,21 @@ namespace RestShape
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    linear_solver          = prm.get("Linear solver") == "cg-amg" ?
-                               LinearSolverType::cg_amg :
-                               LinearSolverType::direct;
-    newton_tolerance       = prm.get_double("Newton tolerance");
-    max_newton_iterations  = prm.get_integer("Maximum Newton iterations");
-    linear_tolerance       = prm.get_double("Linear solver tolerance");
-    inexact_newton         = prm.get_bool("Inexact Newton");
-    const std::string amg  = prm.get("AMG update");
-    amg_update             = amg == "lagged"           ? AmgUpdate::lagged :
-                             amg == "reuse aggregates" ? AmgUpdate::reuse_aggregates :
-                                                         AmgUpdate::rebuild;
-    tangent_shift          = prm.get_double("Tangent shift");
-    max_load_step_halvings = prm.get_integer("Maximum load step halvings");
-    initial_load_steps     = prm.get_integer("Initial load steps");
+    linear_solver             = prm.get("Linear solver") == "cg-amg" ?
+                                  LinearSolverType::cg_amg :
+                                  LinearSolverType::direct;
+    newton_tolerance          = prm.get_double("Newton tolerance");
+    max_newton_iterations     = prm.get_integer("Maximum Newton iterations");
+    linear_tolerance          = prm.get_double("Linear solver tolerance");
+    inexact_newton            = prm.get_bool("Inexact Newton");
+    const std::string amg     = prm.get("AMG update");
+    amg_update                = amg == "lagged"           ? AmgUpdate::lagged :
+                                amg == "reuse aggregates" ? AmgUpdate::reuse_aggregates :
+                                                            AmgUpdate::rebuild;
+    amg_aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    tangent_shift             = prm.get_double("Tangent shift");
+    max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
+    initial_load_steps        = prm.get_integer("Initial load steps");
     prm.leave_subsection();
     if (!(newton_tolerance > 0))
       throw InputError("",

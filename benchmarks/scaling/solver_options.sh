@@ -8,6 +8,7 @@
 #            first step kept, the rest of the AMG recomputed)
 #   lagged   Solver/AMG update = lagged (an earlier step's AMG until CG
 #            slows down)
+#   aggX     Solver/AMG aggregation threshold = X (default 0), e.g. agg0.02
 #   and combinations joined by '+', e.g. inexact+lagged
 # Reports wall time, Newton steps, CG iterations (total and per step), the
 # seconds of the linear solves and of the AMG set-up within them
@@ -43,18 +44,19 @@ mesh_file() {
     echo "$out/meshes/brain_$1.msh"
   fi
 }
-options() { # variant -> "inexact amg_update"
-  local inexact=false update=rebuild part
+options() { # variant -> "inexact threshold amg_update"
+  local inexact=false update=rebuild threshold=0 part
   for part in ${1//+/ }; do
     case $part in
       fixed) ;;
       inexact) inexact=true ;;
       reuse) update="reuse aggregates" ;;
       lagged) update=lagged ;;
-      *) echo "unknown variant part '$part' (expected fixed, inexact, reuse or lagged)" >&2; return 1 ;;
+      agg*) threshold=${part#agg} ;;
+      *) echo "unknown variant part '$part' (expected fixed, inexact, reuse, lagged or aggX)" >&2; return 1 ;;
     esac
   done
-  echo "$inexact $update"
+  echo "$inexact $threshold $update"
 }
 echo "machine: $(machine)"
 echo
@@ -71,13 +73,13 @@ for c in $cases; do
   first_max=""
   for variant in $variants; do
     opts=$(options "$variant") || exit 1
-    read -r inexact update <<<"$opts"
+    read -r inexact threshold update <<<"$opts"
     dir=$out/${c}_$variant
     rm -rf "$dir"
     if ! "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" --set "Mesh/Global refinements=$refinements" \
       --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
       --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" --set "Solver/Inexact Newton=$inexact" \
-      --set "Solver/AMG update=$update" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
+      --set "Solver/AMG update=$update" --set "Solver/AMG aggregation threshold=$threshold" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
       echo "| $c | failed ($variant): $(tail -n 1 "$dir.log") |"
       status=1
       continue

@@ -121,9 +121,11 @@ namespace RestShape
     double           linear_tolerance;
     bool             inexact_newton;
     AmgUpdate        amg_update;
-    double           tangent_shift; // relative; 0: off
-    unsigned int     max_load_step_halvings;
-    unsigned int     initial_load_steps;
+    /// ML's "aggregation: threshold" (dimensionless, >= 0).
+    double       amg_aggregation_threshold;
+    double       tangent_shift; // relative; 0: off
+    unsigned int max_load_step_halvings;
+    unsigned int initial_load_steps;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

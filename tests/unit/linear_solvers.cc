@@ -3,8 +3,9 @@
 // null space), for P1 tetrahedra and Q1 hexahedra; CG + AMG also with
 // Inexact Newton, with the AMG aggregates of the first Newton step reused
 // in the later ones, and with a lagged AMG (the tangent changes a lot
-// between the steps of this large rotation). Prints Newton and linear iteration
-// counts.
+// between the steps of this large rotation); all with the default AMG
+// aggregation threshold 0 and once with 0.02. Prints Newton and linear
+// iteration counts.
 #include <deal.II/base/mpi.h>
 
 #include "test_utilities.h"
@@ -54,13 +55,18 @@ main(int argc, char **argv)
             " set Inexact Newton = true\n set AMG update = rebuild\n",
             " set Inexact Newton = false\n set AMG update = reuse aggregates\n",
             " set Inexact Newton = false\n set AMG update = lagged\n",
-            " set Inexact Newton = true\n set AMG update = lagged\n"})
+            " set Inexact Newton = true\n set AMG update = lagged\n",
+            " set Inexact Newton = true\n set AMG update = lagged\n"
+            " set AMG aggregation threshold = 0.02\n"})
         {
           const std::string name =
             cell_type + ", cg-amg" +
             (options.find("= true") != std::string::npos ? " inexact" : "") +
             (options.find("reuse") != std::string::npos ? " reuse" : "") +
-            (options.find("lagged") != std::string::npos ? " lagged" : "");
+            (options.find("lagged") != std::string::npos ? " lagged" : "") +
+            (options.find("threshold") != std::string::npos ?
+               " aggregation threshold 0.02" :
+               "");
           SolveStatistics amg_stats;
           VectorType      amg = solve(cell_type, "cg-amg", options, amg_stats);
           std::cout << name << ": Newton iterations "
