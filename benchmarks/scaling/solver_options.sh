@@ -2,7 +2,8 @@
 # Options of the iterative linear solver (CG + ML AMG) compared in one run
 # on the brain forward solve of prm/brain.prm without VTU:
 #   fixed    the fixed linear tolerance (1e-8 relative in every Newton step)
-#            and a new AMG preconditioner in every Newton step (the default)
+#            and a new AMG preconditioner in every Newton step (the default
+#            until 2026-11-23; now inexact+lagged)
 #   inexact  Solver/Inexact Newton = true (Eisenstat-Walker tolerances)
 #   reuse    Solver/AMG update = reuse aggregates (the aggregates of the
 #            first step kept, the rest of the AMG recomputed)
@@ -14,7 +15,8 @@
 # seconds of the linear solves and of the AMG set-up within them
 # (TimerOutput), and the largest and mean
 # displacement, which must agree with the first variant's to 1e-6 (all
-# converge to the Newton tolerance). Time ratios are against the first
+# converge to the Newton tolerance; with contact nodes on fixed planes, to
+# their distance off the obstacle). Time ratios are against the first
 # variant of the same mesh, for the whole run and for the linear solves
 # (assembly, the same work in every variant, varies by 10-20 % from run to
 # run on a shared machine: the linear-solve ratio is the sharper one).
@@ -90,16 +92,22 @@ for c in $cases; do
     per_step=$(value linear_iterations_per_newton_step "$s")
     max=$(value max_displacement_mm "$s")
     linear=$(timer_seconds 'Linear solve' "$dir.log")
-    [ -z "$first_seconds" ] && { first_seconds=$seconds; first_linear=$linear; first_max=$max; }
+    planes=$(value fixed_plane_distance_mm "$s")
+    planes=${planes:-0}
+    [ -z "$first_seconds" ] && { first_seconds=$seconds; first_linear=$linear; first_max=$max; first_planes=$planes; }
     printf '| %s | %s | %s | %.2f | %s | %.0f | %.1f | %s / %s | %.6f / %.6f | %.2f | %.2f |\n' "$c" "$(value n_dofs "$s")" \
       "$variant" "$seconds" "$newton" "$(awk -v a="$per_step" -v b="$newton" 'BEGIN { print a * b }')" "$per_step" \
       "$linear" "$(timer_seconds 'AMG set-up' "$dir.log")" "$max" "$(value mean_displacement_mm "$s")" \
       "$(awk -v a="$seconds" -v b="$first_seconds" 'BEGIN { print a / b }')" \
       "$(awk -v a="$linear" -v b="$first_linear" 'BEGIN { print a / b }')"
-    # All converged to |R|/|f| <= 1e-10: they must agree far below the
-    # mesh's resolution.
-    awk -v a="$max" -v b="$first_max" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }' ||
-      { echo "FAIL: $c: largest displacement $max mm ($variant) against $first_max mm (first variant)"; status=1; }
+    # All converged to the Newton tolerance: they must agree far below the
+    # mesh's resolution, to 1e-6 relative; with contact nodes on fixed
+    # planes (a crease whose planes kept changing, doc/contact.md), to the
+    # larger of the two runs' distances of those nodes off the obstacle,
+    # because which planes get fixed depends on the Newton path.
+    awk -v a="$max" -v b="$first_max" -v p="$planes" -v q="$first_planes" \
+      'BEGIN { d = a - b; if (d < 0) d = -d; t = 1e-6 * b; if (p > t) t = p; if (q > t) t = q; exit !(d <= t) }' ||
+      { echo "FAIL: $c: largest displacement $max mm ($variant) against $first_max mm (first variant; fixed-plane distances $planes and $first_planes mm)"; status=1; }
   done
 done
 exit $status
