@@ -8,6 +8,7 @@
 #include <array>
 #include <map>
 #include <numeric>
+#include <sstream>
 
 namespace RestShape
 {
@@ -252,5 +253,14 @@ namespace RestShape
           }
       }
     return gap;
+  }
+
+  std::string
+  describe_surface_gap(const double width_mm, const dealii::Point<3> &where_mm)
+  {
+    std::ostringstream line;
+    line << "narrowest gap between folds of the surface: " << width_mm
+         << " mm, from the face at " << where_mm << " mm";
+    return line.str();
   }
 } // namespace RestShape

@@ -1,5 +1,6 @@
 #include <restshape/atomic_file.h>
 #include <restshape/input_error.h>
+#include <restshape/mesh_pieces.h>
 #include <restshape/simulator.h>
 #include <restshape/state_transfer.h>
 
@@ -86,9 +87,8 @@ namespace RestShape
     pcout << std::endl;
     const auto [gap, where] = mesh->narrowest_gap();
     if (std::isfinite(gap))
-      pcout << "  narrowest gap between folds of the surface: " << gap * 1e3
-            << " mm, from the face at " << where * 1e3
-            << " mm (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
+      pcout << "  " << describe_surface_gap(gap * 1e3, where * 1e3)
+            << " (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
   }
 
   void

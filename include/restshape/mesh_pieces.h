@@ -10,6 +10,7 @@
 #include <restshape/mesh.h>
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace RestShape
@@ -76,6 +77,11 @@ namespace RestShape
    */
   SurfaceGap
   narrowest_surface_gap(const MeshDescription &mesh, const double threshold);
+
+  /// "narrowest gap between folds of the surface: W mm, from the face at X
+  /// Y Z mm", the line both programs print (arguments in mm).
+  std::string
+  describe_surface_gap(const double width_mm, const dealii::Point<3> &where_mm);
 } // namespace RestShape
 
 #endif

@@ -232,8 +232,7 @@ main(int argc, char **argv)
       const SurfaceGap gap =
         narrowest_surface_gap(mesh, options.facet_distance);
       if (std::isfinite(gap.width))
-        std::cout << "narrowest gap between folds of the surface: " << gap.width
-                  << " mm, from the face at " << gap.location << " mm; "
+        std::cout << describe_surface_gap(gap.width, gap.location) << "; "
                   << gap.n_narrow
                   << " surface faces face another fold closer than the facet "
                      "distance (thin flaps of tissue border such gaps; "
