@@ -7,7 +7,7 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <dlfcn.h>
-#include <restshape/linear_solver.h>
+#include <restshape/forward/linear_solver.h>
 
 #include <cstdlib>
 

@@ -15,8 +15,9 @@
 // fixed top, each component, relative to the weight).
 #include <deal.II/base/mpi.h>
 
-#include <restshape/contact.h>
-#include <restshape/generated_meshes.h>
+#include <restshape/contact/contact.h>
+#include <restshape/mesh/generated_meshes.h>
+#include <restshape/mesh/gmsh_io.h>
 
 #include <array>
 #include <filesystem>

@@ -13,7 +13,7 @@
 // Runs on 1 and on 2 MPI ranks (tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
-#include <restshape/error_estimator.h>
+#include <restshape/postprocess/error_estimator.h>
 
 #include "test_utilities.h"
 

@@ -11,8 +11,9 @@
 // more than the accepted 0.1 % of it.
 #include <deal.II/base/mpi.h>
 
-#include <restshape/contact.h>
-#include <restshape/generated_meshes.h>
+#include <restshape/contact/contact.h>
+#include <restshape/mesh/generated_meshes.h>
+#include <restshape/mesh/gmsh_io.h>
 
 #include <filesystem>
 

@@ -11,8 +11,10 @@
 //  3. The enclosing surface at 3 mm is accepted as an obstacle (closed,
 //     outward, no self-intersection) and holds every surface node of the
 //     mesh inside at a distance close to 3 mm.
-#include <restshape/image_mesher.h>
-#include <restshape/obstacle.h>
+#include <restshape/contact/obstacle.h>
+#include <restshape/mesh/mesh_checks.h>
+#include <restshape/mesh/mesh_description.h>
+#include <restshape/mesher/image_mesher.h>
 
 #include <cmath>
 #include <map>

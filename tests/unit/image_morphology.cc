@@ -9,7 +9,7 @@
 //     reach): 64 voxels, 64 mm^3. The layer next to label 1 gets label 1,
 //     the one next to label 3 gets label 3; no labelled voxel changes.
 //  3. The same boxes 5 voxels apart: nothing is added.
-#include <restshape/image_morphology.h>
+#include <restshape/mesher/image_morphology.h>
 
 #include "test_utilities.h"
 

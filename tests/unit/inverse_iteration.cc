@@ -12,8 +12,8 @@
 //    converges; Anderson converges even without the walls.
 #include <deal.II/base/mpi.h>
 
-#include <restshape/contact.h>
-#include <restshape/inverse_problem.h>
+#include <restshape/contact/contact.h>
+#include <restshape/inverse/inverse_problem.h>
 
 #include "test_utilities.h"
 

@@ -13,7 +13,9 @@
 //  5. Gaps between folds of the surface: none on a convex body; a U of
 //     cubes, its slot 1 wide and then 0.3; the committed coarse brain
 //     against a Python ray caster written independently.
-#include <restshape/mesh_pieces.h>
+#include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/mesh_description.h>
+#include <restshape/mesh/mesh_pieces.h>
 
 #include "test_utilities.h"
 

@@ -17,7 +17,7 @@
 // triangulation; tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
-#include <restshape/state_transfer.h>
+#include <restshape/forward/state_transfer.h>
 
 #include "test_utilities.h"
 

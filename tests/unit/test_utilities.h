@@ -7,11 +7,13 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/contact.h>
-#include <restshape/forward_problem.h>
-#include <restshape/material.h>
-#include <restshape/mesh.h>
-#include <restshape/parameters.h>
+#include <restshape/base/parameters.h>
+#include <restshape/contact/contact.h>
+#include <restshape/forward/forward_problem.h>
+#include <restshape/forward/material.h>
+#include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/labelled_mesh.h>
+#include <restshape/mesh/mesh_transforms.h>
 
 #include <cmath>
 #include <iostream>

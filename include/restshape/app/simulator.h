@@ -1,0 +1,104 @@
+// A scene run from start to end, in a fixed order (as in step-42):
+// mesh, materials, checks, then for every refinement cycle setup, solve
+// (forward, or the inverse rest-shape iteration), postprocess; finally the
+// summary and the timing table.
+#ifndef restshape_simulator_h
+#define restshape_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <restshape/base/parameters.h>
+#include <restshape/contact/contact.h>
+#include <restshape/forward/forward_problem.h>
+#include <restshape/forward/material.h>
+#include <restshape/inverse/inverse_problem.h>
+#include <restshape/io/output.h>
+#include <restshape/mesh/labelled_mesh.h>
+#include <restshape/postprocess/error_estimator.h>
+#include <restshape/postprocess/verification.h>
+
+#include <memory>
+#include <optional>
+
+namespace RestShape
+{
+  class Simulator
+  {
+  public:
+    /**
+     * @p prm holds the effective parameters (written to parameters.prm),
+     * @p prm_file is the scene file (for messages).
+     */
+    Simulator(const Parameters               &parameters,
+              const dealii::ParameterHandler &prm,
+              const std::string              &prm_file,
+              const MPI_Comm                  comm);
+
+    /**
+     * Run the scene. Input errors throw InputError before anything is
+     * written; a solver that fails writes summary.json (converged = false,
+     * with its figures) and throws SolverFailure.
+     */
+    void
+    run();
+
+  private:
+    void
+    make_mesh();
+    void
+    check_scene() const;
+    void
+    setup_problems();
+    VectorType
+    initial_rest_shape() const;
+    void
+    prepare_output();
+    /// Refine (cycle > 0), set up again and, with Adaptive
+    /// refinement/Transfer solution, carry the displacement into @p guess
+    /// and the rest displacement into @p rest; otherwise @p rest = 0 and
+    /// @p guess is empty.
+    void
+    refine(VectorType &rest, std::optional<VectorType> &guess);
+    /// @p guess: Newton's initial displacement at the full load (nullptr:
+    /// load from the unloaded mesh).
+    SolveStatistics
+    solve_forward(const VectorType &rest, const VectorType *guess);
+    SolveStatistics
+    solve_inverse(const unsigned int cycle,
+                  const VectorType  &initial_rest,
+                  const VectorType  *guess);
+    void
+    compare_prestress();
+    void
+    postprocess(const unsigned int cycle, const SolveStatistics &stats);
+    void
+    write_summary(const SolveStatistics &stats);
+
+    const Parameters               &parameters;
+    const dealii::ParameterHandler &prm;
+    const std::string               prm_file;
+    const MPI_Comm                  comm;
+    dealii::ConditionalOStream      pcout;
+    dealii::TimerOutput             timer;
+    dealii::Timer                   wall_timer;
+
+    std::unique_ptr<LabelledMesh>      mesh;
+    std::unique_ptr<MaterialTable>     materials;
+    std::unique_ptr<ForwardProblem>    forward;
+    std::unique_ptr<ContactProblem>    contact;
+    std::unique_ptr<OutputWriter>      output;
+    std::unique_ptr<ExactDisplacement> exact, exact_rest;
+
+    Summary                          summary;
+    dealii::ConvergenceTable         convergence_table;
+    std::vector<std::vector<double>> convergence_rows, iteration_rows;
+    unsigned int                     next_step = 0; // VTU numbering
+    InverseResult                    inverse_result;
+    ErrorEstimate                    estimate; // of the last cycle
+  };
+} // namespace RestShape
+
+#endif

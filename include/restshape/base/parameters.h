@@ -1,0 +1,267 @@
+// One parameter struct per subsection of the .prm file.
+//
+// Every struct declares its entries (with defaults and documentation that
+// `restshape --print-parameters` shows) and parses them into typed members
+// in SI units. Range errors throw InputError naming "Subsection/Parameter".
+#ifndef restshape_parameters_h
+#define restshape_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <restshape/base/label_values.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  enum class CellType
+  {
+    tetrahedra,
+    hexahedra
+  };
+
+  enum class TangentType
+  {
+    consistent,
+    projected,
+    adaptive,
+    warped
+  };
+
+  /// How the AMG preconditioner follows the tangent (Solver/AMG update).
+  enum class AmgUpdate
+  {
+    rebuild,
+    reuse_aggregates,
+    lagged
+  };
+
+  enum class LinearSolverType
+  {
+    direct,
+    cg_amg
+  };
+
+  /// Parse a length unit name ("mm" or "m") into metres per unit.
+  double
+  length_unit_in_metres(const std::string &name, const std::string &parameter);
+
+  struct MeshParameters
+  {
+    std::string  file;
+    std::string  rest_shape_file;  // optional: the rest shape (same mesh)
+    std::string  length_unit_name; // "mm" or "m"
+    double       length_unit;      // metres per unit of the file
+    CellType     cell_type;
+    unsigned int global_refinements;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct DiscretizationParameters
+  {
+    unsigned int degree;
+    TangentType  tangent;
+    std::string  tangent_name; // as in the .prm, for summary.json
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct MaterialParameters
+  {
+    LabelValues youngs_modulus; // Pa
+    LabelValues poissons_ratio; // -
+    LabelValues density;        // kg/m^3
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct BoundaryParameters
+  {
+    std::vector<FixedLabel> fixed_labels;
+    double support_stiffness = 0; // N/m^3: traction (Pa) per m of displacement
+    std::set<Label> support_labels; // empty: all labels not fully fixed
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct LoadParameters
+  {
+    dealii::Tensor<1, 3> gravity;    // m/s^2
+    double               pressure;   // Pa, positive pushes inward
+    double fluid_density = 0;        // kg/m^3 of an immersing fluid (buoyancy)
+    std::set<Label> pressure_labels; // empty: all unfixed labels
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct SolverParameters
+  {
+    LinearSolverType linear_solver;
+    double           newton_tolerance;
+    unsigned int     max_newton_iterations;
+    double           linear_tolerance;
+    bool             inexact_newton;
+    AmgUpdate        amg_update;
+    /// ML's "aggregation: threshold" (dimensionless, >= 0).
+    double       amg_aggregation_threshold;
+    double       tangent_shift; // relative; 0: off
+    unsigned int max_load_step_halvings;
+    unsigned int initial_load_steps;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string directory;
+    bool        write_vtu;
+    bool        write_nodal_csv;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct VerificationParameters
+  {
+    std::string exact_displacement;      // muparser, 3 components; empty: none
+    std::string exact_rest_displacement; // the same for X_rest - X
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct RefinementParameters
+  {
+    enum class Strategy
+    {
+      global,
+      adaptive
+    };
+    enum class Estimator
+    {
+      kelly,
+      traction_jump
+    };
+    unsigned int cycles;
+    Strategy     strategy;
+    Estimator    estimator         = Estimator::kelly;
+    double       refine_fraction   = 0.3;  // of the cells, largest indicators
+    double       coarsen_fraction  = 0.0;  // of the cells, smallest indicators
+    bool         transfer_solution = true; // start from the previous cycle
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct ContactParameters
+  {
+    std::string     obstacle_file; // empty: no contact
+    std::string     length_unit_name;
+    double          length_unit;
+    bool            inside; // allowed region: inside the closed surface
+    std::set<Label> labels; // empty: all
+    double          active_set_constant;
+    unsigned int    free_updates  = 10;
+    unsigned int    plane_changes = 6; // then a crease node's planes are fixed
+
+    bool
+    enabled() const
+    {
+      return !obstacle_file.empty();
+    }
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct InverseParameters
+  {
+    enum class Measure
+    {
+      mean,
+      max
+    };
+    enum class Acceleration
+    {
+      none,
+      anderson
+    };
+    bool         enabled;
+    Measure      measure;
+    double       tolerance; // m
+    unsigned int max_iterations;
+    Acceleration acceleration;
+    unsigned int anderson_depth;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct PrestressComparisonParameters
+  {
+    bool                 enabled;
+    dealii::Tensor<1, 3> extra_acceleration; // m/s^2
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// All subsections together: what a scene file describes.
+  struct Parameters
+  {
+    MeshParameters                mesh;
+    DiscretizationParameters      discretization;
+    MaterialParameters            materials;
+    BoundaryParameters            boundary;
+    LoadParameters                loads;
+    SolverParameters              solver;
+    OutputParameters              output;
+    VerificationParameters        verification;
+    RefinementParameters          refinement;
+    ContactParameters             contact;
+    InverseParameters             inverse;
+    PrestressComparisonParameters prestress_comparison;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Throws InputError (without file name; the caller adds it).
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,324 @@
+// Frictionless one-sided contact with a rigid triangulated obstacle, by a
+// primal-dual active set (semismooth Newton) inside the Newton loop.
+#ifndef restshape_contact_h
+#define restshape_contact_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <restshape/base/parameters.h>
+#include <restshape/contact/obstacle.h>
+#include <restshape/forward/forward_problem.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  /**
+   * Node-to-surface contact. Candidates are the boundary nodes of the
+   * contact labels. At every Newton iterate, each candidate i has a signed
+   * gap g_i (m, > 0 on the allowed side) and the gap's gradient n_i. A node
+   * is active when it is eligible and
+   *
+   *     p_i - c (g_i - g_tol) > 0,      p_i = lambda_i / A_i,
+   *
+   * with lambda_i = -r_i . n_i the obstacle's force on an active node (from
+   * the raw residual r, N; zero for inactive nodes), A_i the node's lumped
+   * (HRZ) area, c = (Active set constant) E_max / h_min. Active nodes get the
+   * linearised constraint n_i . delta_i = -g_i (an AffineConstraints line on
+   * their dominant free component, general normals allowed). A node resting
+   * in a crease of the triangulated obstacle (its closest face alternates)
+   * holds the planes of both faces, two constraints, and slides along the
+   * crease; in a corner, three.
+   *
+   * One-sided rule (Morin et al. 2015): a node is eligible once it has been
+   * on the allowed side (g >= -g_tol) during the solve, or once a Newton step
+   * carried it through the allowed region and out again; a node that starts a
+   * solve on the wrong side is free until then.
+   */
+  class ContactProblem
+  {
+  public:
+    ContactProblem(const ContactParameters &parameters,
+                   const ForwardProblem    &forward,
+                   dealii::TimerOutput     &timer);
+    ~ContactProblem();
+
+    /// Find candidate nodes and their areas (after ForwardProblem::setup()).
+    void
+    setup();
+
+    /// A new solve starts from displacement @p d (ghosted).
+    void
+    begin_solve(const VectorType &d);
+
+    /// The active and eligible flags of every candidate: saved with an
+    /// equilibrium, restored with it when a step is taken back.
+    using State = std::vector<std::pair<bool, bool>>;
+    State
+    state() const;
+    void
+    set_state(const State &state);
+    /// Forget the active set (a new problem starts).
+    void
+    reset();
+
+    /**
+     * Gaps at @p d; eligibility; new active set from the contact forces in
+     * @p raw_residual (ignored if @p first_iteration: no node is released).
+     * Returns whether the active set changed.
+     */
+    bool
+    update_active_set(const VectorType &d,
+                      const VectorType &raw_residual,
+                      const bool        first_iteration);
+
+    /**
+     * The largest step length alpha <= 1 along the Newton update @p delta
+     * (owned vector) for which no eligible inactive node goes further than
+     * a quarter of the smallest cell beyond the obstacle (linearised gap
+     * g + alpha n . delta): a step cannot carry the body through the
+     * obstacle; the nodes that reach it are activated at the next iterate.
+     */
+    double
+    max_step(const VectorType &delta) const;
+
+    /// Add the constraints of the active nodes (not touching @p base's).
+    void
+    add_constraints(dealii::AffineConstraints<double>       &constraints,
+                    const dealii::AffineConstraints<double> &base) const;
+
+    /**
+     * Called when Newton has converged with releases frozen (cycling, or
+     * more than Contact/Free active-set updates in this solve): if the
+     * active nodes that pull on the obstacle (tensile contact force) carry
+     * more than 0.1 % of the total contact force, exactly those are released
+     * (they come back only if they go through the obstacle) and true is
+     * returned (Newton goes on); at most five times per solve. Nodes that
+     * came back (grazing) are held: their pull is accepted and reported
+     * (grazing_pull()).
+     */
+    bool
+    thaw_if_adhesive(const VectorType &raw_residual);
+
+    /// At the last thaw_if_adhesive(): the number of grazing nodes that
+    /// pulled (held all the same) and their pull over the total contact
+    /// force.
+    std::pair<unsigned int, double>
+    grazing_pull() const
+    {
+      return {n_grazing_pulling, grazing_pull_fraction};
+    }
+
+    /// No eligible node beyond the obstacle and every active node on it
+    /// (within g_tol) at the state of the last update.
+    bool
+    is_satisfied() const;
+
+    /// Why the contact conditions are not met at the state of the last
+    /// update (nodes through the obstacle, active nodes off it, the largest
+    /// violation in mm, nodes the last update added or released), for the
+    /// message of a Newton solve whose residual met the tolerance when it
+    /// ran out of iterations.
+    std::string
+    unsettled_text() const;
+
+    /// ", contact N active (+a -r)" for the Newton progress line.
+    std::string
+    progress_text() const;
+
+    // --- results at the state of the last update ------------------------
+    unsigned int
+    n_active() const;
+    /// Active nodes that hold the planes of two or three faces (creases and
+    /// corners of the obstacle's triangulation).
+    unsigned int
+    n_held() const;
+    /// Active nodes whose planes kept changing and are fixed for the rest of
+    /// the solve, and the largest distance of one of them from the obstacle
+    /// surface (m): they meet their planes' constraints, not the surface's.
+    std::pair<unsigned int, double>
+    fixed_plane_nodes() const;
+    /// Active nodes whose own contact force pulls on the obstacle (accepted
+    /// below 0.1 % of the contact force, or as grazing, or when the thaws
+    /// ran out): how many, their summed pull (N) and its ratio to the summed
+    /// push of the others.
+    struct Adhesion
+    {
+      unsigned int nodes    = 0;
+      double       force    = 0;
+      double       fraction = 0;
+    };
+    Adhesion
+    adhesion(const VectorType &raw_residual) const;
+    /// Sum of the obstacle's forces on the body (N).
+    dealii::Tensor<1, 3>
+    total_force(const VectorType &raw_residual) const;
+    /// Largest penetration (-gap) of an eligible node (m), and of any node.
+    double
+    max_penetration(const bool eligible_only) const;
+    /**
+     * Per node: x slot 1 for active nodes, y slot the gap (in metres times
+     * @p length_scale), z slot the contact pressure (Pa).
+     */
+    VectorType
+    nodal_fields(const VectorType &raw_residual,
+                 const double      length_scale) const;
+    /// Smallest and largest contact pressure over active nodes (Pa).
+    std::pair<double, double>
+    pressure_range(const VectorType &raw_residual) const;
+    /// Largest distance of an active node from the axis through @p point
+    /// along @p direction (m): the radius of the contact zone.
+    double
+    contact_radius(const dealii::Point<3>     &point,
+                   const dealii::Tensor<1, 3> &direction) const;
+    /// contact_radius() about the axis through the centroid of the active
+    /// nodes along @p direction (m; 0 without active nodes): the radius of
+    /// a contact patch whose centre is not known in advance.
+    double
+    patch_radius(const dealii::Tensor<1, 3> &direction) const;
+    unsigned int
+    n_candidates() const;
+    /// Candidates beyond the obstacle (gap < -g_tol), eligible or not.
+    unsigned int
+    n_outside() const;
+
+    /// Tolerance on gaps (m).
+    double gap_tolerance;
+
+  private:
+    /// The plane of an obstacle face: unit normal towards the allowed side,
+    /// a point on it (m), and a node's signed distance from it (m).
+    struct Plane
+    {
+      dealii::Tensor<1, 3> normal;
+      dealii::Point<3>     point;
+      double               gap = 0;
+    };
+
+    struct Candidate
+    {
+      Node                node;
+      std::array<bool, 3> fixed;
+      bool                owned;
+      double area_lumped = 0; // HRZ over all its boundary faces, m^2
+      bool   eligible    = false;
+      bool   active      = false;
+      bool   pulled      = false; // released by thaw_if_adhesive()
+      /// Released for pulling and back through the obstacle in this solve:
+      /// it pulls when held and penetrates when free, so it is held and its
+      /// pull accepted (not released again in this solve).
+      bool                 grazing = false;
+      double               gap     = 0;
+      dealii::Tensor<1, 3> normal;
+      dealii::Point<3>     previous_position;
+      /// While releases are frozen: the plane of the closest face at the
+      /// last update, the faces left since (at most four), and the planes
+      /// held (see update_active_set()).
+      Plane              face;
+      std::vector<Plane> left, held;
+      unsigned int       dropped = 0; // held planes let go (bits; owner, thaw)
+      /// Held planes fixed for the rest of the solve (they kept changing):
+      /// the node's constraints are these planes, not the surface.
+      bool         fixed_planes  = false;
+      unsigned int plane_changes = 0; // changes of the held planes, frozen
+      /// For a node on fixed planes: the plane through their mean point
+      /// with their mean normal, imposed instead when the planes cannot be
+      /// (too few free components); whether they could, at the last
+      /// add_constraints().
+      Plane        mean_plane;
+      mutable bool planes_imposed = true;
+    };
+
+    /// Violated contact conditions over all ranks, at the state of the
+    /// last update: eligible nodes beyond the obstacle, active nodes off
+    /// it (|gap| > g_tol), and the largest |gap| among them (m).
+    struct Violations
+    {
+      unsigned int through = 0, off = 0;
+      double       worst = 0;
+    };
+    Violations
+    violations() const;
+    /// The mesh's MPI communicator.
+    MPI_Comm
+    communicator() const;
+    /// Owned candidates for which @p predicate holds, summed over the ranks.
+    template <typename Predicate>
+    unsigned int
+    count_owned(const Predicate &predicate) const;
+
+    dealii::Point<3>
+    position(const Candidate &c, const VectorType &d) const;
+    /// The obstacle's force on an active node along its normal (N).
+    double
+    contact_force(const Candidate &c, const VectorType &raw_residual) const;
+    /// The obstacle's force on an active node (N): along its normal, or
+    /// split among its held planes (their multipliers, in the order of
+    /// Candidate::held, in @p multipliers if given).
+    dealii::Tensor<1, 3>
+    reaction(const Candidate     &c,
+             const VectorType    &raw_residual,
+             std::vector<double> *multipliers = nullptr) const;
+    /// Update the held planes of an active node while releases are frozen.
+    void
+    update_held_planes(Candidate &c, const dealii::Point<3> &x, const Gap &g);
+    /// Forget the held planes and locks of a node (a new solve, or a node
+    /// that is not active while releases are frozen).
+    static void
+    let_go(Candidate &c);
+    /// The gap the node's constraints use (m): the signed distance to the
+    /// obstacle, or for a node on fixed planes the one farthest from 0 (or
+    /// the mean plane's, if those were imposed instead).
+    static double
+    constrained_gap(const Candidate &c);
+    /// Let go of the held planes whose bits are set in @p mask.
+    static void
+    drop_planes(Candidate &c, const unsigned int mask);
+    /// The node's normal: the mean of its held planes' normals.
+    static void
+    set_normal_from_held(Candidate &c);
+    /// Add the constraints n_i . delta = -g_i of the planes @p planes of
+    /// candidate @p c; false if its free components cannot satisfy them.
+    bool
+    add_plane_constraints(const Candidate                         &c,
+                          const std::vector<Plane>                &planes,
+                          dealii::AffineConstraints<double>       &constraints,
+                          const dealii::AffineConstraints<double> &base) const;
+    void
+    share_flags();
+    /// Contact pressure of every candidate (Pa; 0 where inactive).
+    std::vector<double>
+    pressures(const VectorType &raw_residual) const;
+
+    const ContactParameters   parameters;
+    const ForwardProblem     &forward;
+    dealii::TimerOutput      &timer;
+    std::unique_ptr<Obstacle> obstacle;
+    /// A boundary face of a contact label: its candidate nodes with, for
+    /// each, the HRZ-lumped area and int phi dA (m^2).
+    struct Face
+    {
+      std::vector<unsigned int> nodes;
+      std::vector<double>       lumped, integral;
+      dealii::Tensor<1, 3>      normal; // outward, mesh geometry
+    };
+
+    std::vector<Candidate> candidates;
+    std::vector<Face>      faces;
+    double                 c_scaled = 0;
+    std::set<std::size_t>  history;
+    double                 h_min           = 0;
+    bool                   releases_frozen = false;
+    unsigned int           n_updates = 0, n_thaws = 0;
+    unsigned int           n_grazing_pulling     = 0;
+    double                 grazing_pull_fraction = 0;
+    unsigned int           n_added = 0, n_released = 0;
+  };
+} // namespace RestShape
+
+#endif

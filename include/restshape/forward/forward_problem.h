@@ -1,0 +1,377 @@
+// The forward problem: static equilibrium of the co-rotational body under
+// gravity, surface pressure, fixed labels (and contact), by Newton's method
+// with line search and load stepping. Implemented in forward_problem.cc
+// (set-up, state, postprocessing), forward_problem_assembly.cc and
+// forward_problem_newton.cc.
+#ifndef restshape_forward_problem_h
+#define restshape_forward_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <restshape/base/parameters.h>
+#include <restshape/forward/linear_solver.h>
+#include <restshape/forward/material.h>
+#include <restshape/mesh/labelled_mesh.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  class ContactProblem;
+
+  /**
+   * What loads the body: a body acceleration (gravity plus any extra field,
+   * m/s^2) acting on the mass of the mesh (target) geometry, and the surface
+   * pressure (Pa) on the pressure faces of the mesh geometry. Both are dead
+   * loads; the external load vector is linear in them.
+   */
+  struct LoadState
+  {
+    dealii::Tensor<1, 3> acceleration;
+    double               pressure = 0;
+  };
+
+  /// A mesh node: its three displacement DoFs and its mesh position (m).
+  struct Node
+  {
+    std::array<dealii::types::global_dof_index, 3> dofs;
+    dealii::Point<3>                               position;
+  };
+
+  struct SolveStatistics
+  {
+    bool         converged          = false;
+    unsigned int newton_iterations  = 0; // linear solves, all load steps
+    unsigned int load_steps         = 0; // accepted increments
+    unsigned int linear_iterations  = 0;
+    unsigned int active_set_changes = 0;
+    double       residual           = 0; // final, N
+    double       reference          = 0; // norm of the external loads, N
+    std::string  failure;                // why it did not converge
+    /// The last failed Newton solve failed because its line search's
+    /// trial steps inverted cells.
+    bool cells_inverted = false;
+    /// Fraction of the way from the start to the target load and rest shape
+    /// at which the state is in equilibrium: 1 when converged, less when
+    /// the load-step halvings ran out part of the way (0: not even the
+    /// smallest increment converged).
+    double fraction = 0;
+    /// |R|/|f| after every accepted Newton step of the last load step.
+    std::vector<double> residual_history;
+  };
+
+  /// The load increments of ForwardProblem::solve(), as fractions of the
+  /// way from the start to the target: an accepted increment doubles the
+  /// next one (up to the rest of the way), a failed one is halved.
+  struct LoadSteps
+  {
+    double done      = 0; // fraction in equilibrium
+    double increment = 1;
+
+    /// The fraction to try next.
+    double
+    next() const
+    {
+      return std::min(1., done + increment);
+    }
+    void
+    accept(const double s)
+    {
+      done      = s;
+      increment = std::min(2 * increment, 1.);
+    }
+    /// Half the increment that failed (which may have been cut at the full
+    /// load: halving the nominal increment alone retried the same step).
+    void
+    reject(const double s)
+    {
+      increment = (s - done) / 2;
+    }
+  };
+
+  class ForwardProblem
+  {
+  public:
+    /// Relative residual at which Newton stops (Solver/Newton tolerance).
+    double
+    newton_tolerance() const
+    {
+      return parameters.solver.newton_tolerance;
+    }
+
+    ForwardProblem(const Parameters           &parameters,
+                   LabelledMesh               &mesh,
+                   const MaterialTable        &materials,
+                   dealii::TimerOutput        &timer,
+                   dealii::ConditionalOStream &pcout);
+    ~ForwardProblem();
+
+    /// Distribute DoFs, build constraints and the matrix; zero state.
+    void
+    setup();
+
+    /// Optional contact (owned by the caller; nullptr: none). Its setup()
+    /// must follow setup().
+    void
+    set_contact(ContactProblem *contact);
+
+    /**
+     * Move the equilibrium from the current state (an equilibrium of the
+     * current load and rest shape, e.g. the unloaded state after setup())
+     * to @p load with rest displacement @p rest (owned vector). Increments
+     * are halved when Newton fails. The state is left at the last
+     * equilibrium reached.
+     */
+    SolveStatistics
+    solve(const LoadState &load, const VectorType &rest);
+
+    /**
+     * Equilibrium under @p load with rest displacement @p rest (owned
+     * vectors) by Newton's method at the full load from the displacement
+     * @p guess (e.g. the previous refinement cycle's solution); if that
+     * fails, or without a guess (nullptr), solve() from the unloaded state
+     * (contact released). The statistics count both attempts.
+     */
+    SolveStatistics
+    solve_from(const VectorType *guess,
+               const LoadState  &load,
+               const VectorType &rest);
+
+    /// The load state of the paper's scene: gravity and the CSF pressure.
+    LoadState
+    scene_load() const;
+
+    // --- state ---------------------------------------------------------
+    /// Equilibrium displacement from the mesh geometry (ghosted, m).
+    const VectorType &
+    displacement() const;
+    /// Rest displacement X_rest - X_mesh (ghosted, m).
+    const VectorType &
+    rest_displacement() const;
+    const LoadState &
+    load() const;
+    /// Set the state (owned vectors); the caller vouches for equilibrium.
+    void
+    set_state(const VectorType &d, const VectorType &w, const LoadState &l);
+    /// A zero owned vector with the DoF layout.
+    VectorType
+    zero_vector() const;
+
+    /// An owned copy of @p v (owned or ghosted): Trilinos adds, subtracts
+    /// and compares only vectors of the same layout.
+    VectorType
+    owned_copy(const VectorType &v) const;
+
+    /**
+     * A displacement-like field from values at the mesh vertices (indexed
+     * by triangulation vertex), interpolated linearly (P1/Q1) into the
+     * finite element space (owned vector).
+     */
+    VectorType
+    interpolate_vertex_field(
+      const std::vector<dealii::Tensor<1, 3>> &values) const;
+
+    /**
+     * Check a rest displacement: false (with the number of bad cells) if
+     * det(I + grad w) <= 0 at some quadrature point of a cell, i.e. the rest
+     * shape has inverted or degenerate cells.
+     */
+    bool
+    rest_shape_is_valid(const VectorType &rest, unsigned int &n_bad) const;
+
+    // --- discretisation ------------------------------------------------
+    const dealii::DoFHandler<3> &
+    dof_handler() const;
+    const dealii::Mapping<3> &
+    mapping() const;
+    const dealii::FESystem<3> &
+    fe() const;
+    const dealii::Quadrature<2> &
+    face_quadrature() const;
+    const dealii::AffineConstraints<double> &
+    base_constraints() const;
+    const dealii::IndexSet &
+    locally_owned_dofs() const;
+    const dealii::IndexSet &
+    locally_relevant_dofs() const;
+    /// Locally owned nodes (all support points, vertices and for degree 2
+    /// edge/face/cell nodes), with their mesh positions.
+    const std::vector<Node> &
+    owned_nodes() const;
+    /// Nodes of locally owned and ghost cells.
+    const std::vector<Node> &
+    relevant_nodes() const;
+    bool
+    is_fixed(const dealii::types::global_dof_index dof) const;
+    const LabelledMesh &
+    mesh() const;
+    const MaterialTable &
+    materials() const;
+
+    // --- derived quantities --------------------------------------------
+    /// Mean and max over all nodes of |v| at the node (v owned or ghosted,
+    /// a displacement-like field; m).
+    std::pair<double, double>
+    nodal_norms(const VectorType &v) const;
+    /// Element-averaged von Mises Cauchy stress (Pa) of the current state,
+    /// one value per active cell (zero on cells not owned here).
+    dealii::Vector<float>
+    von_mises_stress() const;
+    /// Total external force of @p load on the mesh (N), and the weight.
+    dealii::Tensor<1, 3>
+    total_external_force(const LoadState &load) const;
+
+    /// Resultant (N) of the elastic support's tractions on the body.
+    dealii::Tensor<1, 3>
+    elastic_support_force() const;
+    /// Sum over fixed DoFs of the internal forces: the support reaction (N).
+    dealii::Tensor<1, 3>
+    support_reaction() const;
+    /**
+     * Total potential energy of the last assembled state (after solve():
+     * the final state), in J: the strain energy over the rest shape, plus
+     * the elastic support's k/2 |d - w|^2 over its faces, minus the work
+     * f_ext . (d - w) of the dead loads (gravity, CSF pressure) from the
+     * rest shape. Zero in the rest shape; Newton's residual is its negative
+     * gradient. A
+     * stable equilibrium is a local minimum: of two equilibria of the same
+     * scene and mesh, the one with the lower energy is the one the body
+     * prefers. NaN after set_state() until the next assembly.
+     */
+    double
+    potential_energy() const;
+    /**
+     * Assemble at the current state (for tests and diagnostics): the raw
+     * residual and, if @p with_tangent, the tangent (Dirichlet rows
+     * condensed). Returns false if a cell is inverted.
+     */
+    bool
+    evaluate(const bool with_tangent);
+
+    /// The tangent of the last evaluate(true) or Newton step.
+    const MatrixType &
+    tangent_matrix() const;
+
+    /**
+     * f_ext - f_int at the last assembled state (after solve(): the final
+     * state), condensed only for hanging nodes: at fixed DoFs it is minus
+     * the support reaction, at contact nodes minus the contact force (N).
+     */
+    const VectorType &
+    raw_residual() const;
+
+  private:
+    struct ScratchData;
+    struct CopyData;
+    enum class Assemble
+    {
+      residual,
+      residual_and_matrix
+    };
+
+    void
+    setup_nodes();
+    void
+    setup_constraints();
+    void
+    make_newton_constraints();
+    void
+    compute_rigid_body_modes();
+
+    /**
+     * Assemble at the state (ghosted_d, ghosted_w, current_load): the raw
+     * residual f_ext - f_int (base constraints), the condensed residual (all
+     * constraints, homogeneous) and, if asked, the tangent and the Newton
+     * right-hand side (with contact inhomogeneities). Returns false if
+     * det F <= 0 somewhere.
+     */
+    bool
+    assemble(const Assemble what);
+
+    void
+    local_assemble(
+      const typename dealii::DoFHandler<3>::active_cell_iterator &cell,
+      ScratchData                                                &scratch,
+      CopyData                                                   &copy,
+      const Assemble                                              what) const;
+
+    /// Newton for the current target load and rest shape.
+    bool
+    newton(SolveStatistics &stats);
+    /// Scale the tangent's diagonal by (1 + @p mu) (Solver/Tangent shift).
+    void
+    shift_diagonal(const double mu);
+    /// The relative tolerance of the linear solve of a Newton step with
+    /// residual norm @p residual (Solver/Inexact Newton), given the
+    /// previous step's residual and tolerance (0 at the first step) and
+    /// the residual norm @p target at which Newton stops.
+    double
+    linear_tolerance(const double residual,
+                     const double previous_residual,
+                     const double previous_eta,
+                     const double target) const;
+
+    const Parameters           &parameters;
+    LabelledMesh               &labelled_mesh;
+    const MaterialTable        &material_table;
+    dealii::TimerOutput        &timer;
+    dealii::ConditionalOStream &pcout;
+    const MPI_Comm              comm;
+
+    std::unique_ptr<dealii::Mapping<3>> mapping_;
+    dealii::FESystem<3>                 fe_;
+    dealii::Quadrature<3>               cell_quadrature;
+    dealii::Quadrature<2>               face_quadrature_;
+    dealii::DoFHandler<3>               dof_handler_;
+    dealii::IndexSet                    owned_dofs, relevant_dofs;
+    dealii::AffineConstraints<double>   constraints_hanging;
+    dealii::AffineConstraints<double>   constraints_base;   // hanging + fixed
+    dealii::AffineConstraints<double>   constraints_newton; // + contact
+    std::vector<bool>                   fixed_dof;          // relevant dofs
+    std::vector<Node>                   owned_nodes_, relevant_nodes_;
+    std::set<Label>                     pressure_labels, support_labels;
+
+    MatrixType tangent;
+    VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,
+      newton_update;
+    VectorType d, d_ghost, w, w_ghost;
+    // The assembly reads d and w from, and adds into, deal.II's distributed
+    // vectors (locally relevant entries, element access by an index shift)
+    // and copies the sums into the Trilinos vectors above.
+    using BufferType = dealii::LinearAlgebra::distributed::Vector<double>;
+    BufferType d_buffer, w_buffer;
+    BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer;
+    double     total_energy = 0; // of the last assembly (J)
+    // The last assembly that met an inverted cell (det F <= 0 or det G <=
+    // 0 at a quadrature point): how many, and one of them (label, centre
+    // in the mesh, m), summed and chosen over all ranks. Assemblies without
+    // inverted cells leave it as it is.
+    struct InvertedCells
+    {
+      unsigned int               count = 0;
+      dealii::Point<3>           center;
+      dealii::types::material_id label = 0;
+    } inverted_cells;
+    /// "3 cells inverted, e.g. label 1 at (x, y, z) mm of the mesh".
+    std::string
+    inverted_cells_text() const;
+    // Tangent of the next assembly (Tangent = adaptive switches it).
+    TangentType tangent_type = TangentType::consistent;
+    LoadState   current_load;
+
+    std::unique_ptr<LinearSolver> linear_solver;
+    ContactProblem               *contact = nullptr;
+  };
+} // namespace RestShape
+
+#endif

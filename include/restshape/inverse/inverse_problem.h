@@ -1,0 +1,112 @@
+// The rest-shape (inverse) iteration of Sellier (2011) and Morin et al.
+// (2015), optionally Anderson-accelerated, on top of the forward problem.
+#ifndef restshape_inverse_problem_h
+#define restshape_inverse_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <restshape/base/parameters.h>
+#include <restshape/contact/contact.h>
+#include <restshape/forward/forward_problem.h>
+#include <restshape/inverse/anderson.h>
+#include <restshape/io/output.h>
+
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  /// One row of iterations.csv.
+  struct InverseIterationRecord
+  {
+    unsigned int iteration;
+    double       mean_error; // m
+    double       max_error;  // m
+    unsigned int newton_iterations;
+    unsigned int active_contact_nodes;
+    double       wall_seconds;
+    bool         anderson; // the rest shape came from an Anderson step
+  };
+
+  struct InverseResult
+  {
+    bool         converged = false;
+    std::string  reason;                        // why it stopped unconverged
+    unsigned int iterations        = 0;         // accepted rest-shape updates
+    unsigned int forward_solves    = 0;         // including rejected ones
+    unsigned int newton_iterations = 0;         // all forward solves
+    unsigned int rejected_steps    = 0;         // rejected Anderson steps
+    unsigned int partial_updates   = 0;         // plain updates taken in part
+    double       mean_error = 0, max_error = 0; // m
+  };
+
+  /**
+   * Find w = X_rest - X (X: the mesh = target geometry) such that the
+   * equilibrium x = X + d from X_rest under the scene's loads and contact
+   * matches the target: d = 0 at every node. Fixed point (Sellier): e = -d
+   * (the nodal error X_target - X_equilibrium), w <- w + e. Each forward
+   * solve starts from the previous equilibrium; the mass stays that of the
+   * target geometry.
+   *
+   * Safeguards: a rest shape with an inverted or degenerate cell is never
+   * used (an Anderson step falls back to the plain update, a plain update is
+   * shortened, at most 6 halvings); an Anderson step that increases the
+   * error, or whose forward solve fails, is rejected (the plain update from
+   * the last iterate follows); when the forward solve of a plain update runs
+   * out of load-step halvings part of the way, the fraction it reached is
+   * taken as the update, and when it reached none the iteration stops;
+   * divergence (error above twice the initial one, or growing for three
+   * iterations), stagnation (no 1 % improvement of the best error in 10
+   * iterations) and a stall (three partial updates in a row without such
+   * an improvement) stop the iteration with the figures.
+   */
+  class InverseProblem
+  {
+  public:
+    InverseProblem(const InverseParameters    &parameters,
+                   ForwardProblem             &forward,
+                   ContactProblem             *contact,
+                   OutputWriter               *output,
+                   dealii::TimerOutput        &timer,
+                   dealii::ConditionalOStream &pcout,
+                   const dealii::Timer        &wall_timer);
+
+    /**
+     * Run from the rest displacement @p initial_rest (owned; zero: the
+     * target is the first rest shape). VTU output steps are numbered from
+     * @p first_step. If @p guess is given (owned; e.g. the equilibrium
+     * displacement of the previous refinement cycle), the first forward
+     * solve starts Newton from it at the full load. Leaves the forward
+     * problem at the last accepted equilibrium.
+     */
+    InverseResult
+    run(const VectorType  &initial_rest,
+        const unsigned int first_step,
+        const VectorType  *guess = nullptr);
+
+    const std::vector<InverseIterationRecord> &
+    records() const;
+
+  private:
+    double
+    measure(const std::pair<double, double> &errors) const;
+    void
+    record(const unsigned int     iteration,
+           const SolveStatistics &stats,
+           const bool             anderson);
+    void
+    write_output(const unsigned int step, const unsigned int iteration);
+
+    const InverseParameters             parameters;
+    ForwardProblem                     &forward;
+    ContactProblem                     *contact;
+    OutputWriter                       *output;
+    dealii::TimerOutput                &timer;
+    dealii::ConditionalOStream         &pcout;
+    const dealii::Timer                &wall_timer;
+    std::vector<InverseIterationRecord> history;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,39 @@
+// Reading and writing gmsh meshes.
+#ifndef restshape_mesh_gmsh_io_h
+#define restshape_mesh_gmsh_io_h
+
+#include <restshape/mesh/mesh_description.h>
+
+#include <functional>
+#include <string>
+
+namespace RestShape
+{
+  /**
+   * Read a gmsh file into a description in metres. Throws InputError naming
+   * the file and "Mesh/File" for missing, unreadable or malformed files and
+   * for meshes that are not purely tetrahedral or purely hexahedral.
+   */
+  MeshDescription
+  read_gmsh(const std::string &file, const double length_unit);
+
+  /**
+   * Write the active cells of @p tria as gmsh 2.2 ASCII with labels as
+   * physical volume tags. Vertex v is written at position(v) divided by
+   * @p length_unit. Written atomically.
+   */
+  void
+  write_gmsh(const dealii::Triangulation<3>                      &tria,
+             const std::function<dealii::Point<3>(unsigned int)> &position,
+             const double                                         length_unit,
+             const std::string                                   &file);
+
+  /// The same for a mesh description (vertices in metres).
+  void
+  write_gmsh(const MeshDescription &mesh,
+             const double           length_unit,
+             const std::string     &file);
+
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,117 @@
+// The computational mesh of a scene: the (distributed) triangulation, its
+// labels and its refinement.
+#ifndef restshape_mesh_labelled_mesh_h
+#define restshape_mesh_labelled_mesh_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <restshape/base/label_values.h>
+#include <restshape/base/parameters.h>
+#include <restshape/mesh/mesh_description.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace RestShape
+{
+  /**
+   * The computational mesh of a scene: the triangulation (distributed when
+   * run under MPI: shared for tetrahedra, p4est for hexahedra) and its
+   * labels.
+   */
+  class LabelledMesh
+  {
+  public:
+    LabelledMesh(const MeshParameters &parameters, const MPI_Comm comm);
+
+    dealii::Triangulation<3> &
+    triangulation();
+    const dealii::Triangulation<3> &
+    triangulation() const;
+
+    bool
+    is_simplex() const;
+
+    /// Labels present in the mesh, with their cell counts (coarse mesh).
+    const std::map<Label, unsigned int> &
+    label_counts() const;
+
+    std::set<Label>
+    labels() const;
+
+    /// Diagonal of the bounding box (m).
+    double
+    diameter() const;
+
+    /**
+     * Narrowest gap between folds of the surface of the mesh as read (m,
+     * infinity if none) and where it starts (narrowest_surface_gap() in
+     * mesh_pieces.h; computed on rank 0 only, infinity elsewhere). Thin
+     * flaps of tissue border such gaps; refined solutions there converge
+     * slowly and may have several equilibria.
+     */
+    std::pair<double, dealii::Point<3>>
+    narrowest_gap() const;
+
+    /// Smallest cell diameter of the active mesh (m).
+    double
+    minimum_cell_diameter() const;
+
+    /**
+     * The vertex positions (m) of a rest-shape file: a gmsh file with the
+     * cells of the active mesh, in the same order and with the same vertex
+     * order (what write_gmsh() writes, e.g. an inverse run's
+     * rest_shape.msh, with the same Mesh settings). Indexed by vertex of
+     * the triangulation. Throws InputError naming Mesh/Rest shape file if
+     * the file does not match, or has inverted cells.
+     */
+    std::vector<dealii::Point<3>>
+    read_rest_shape(const std::string &file) const;
+
+    /**
+     * Refine every cell once: tetrahedra by red refinement of the mesh
+     * description (the triangulation is rebuilt: DoFHandlers must be
+     * re-initialised; children of cell i are cells 8i..8i+7), hexahedra by
+     * deal.II. @p before_change, if given, is called once the cells are
+     * marked and before the mesh changes (to prepare a StateTransfer).
+     */
+    void
+    refine_global(const std::function<void()> &before_change = {});
+
+    /**
+     * Hexahedra only: refine the @p refine_fraction of the cells with the
+     * largest @p indicators (one per active cell) and coarsen the
+     * @p coarsen_fraction with the smallest; hanging nodes are constrained
+     * by the forward problem. @p before_change as for refine_global().
+     */
+    void
+    refine_adaptive(const dealii::Vector<float> &indicators,
+                    const double                 refine_fraction,
+                    const double                 coarsen_fraction,
+                    const std::function<void()> &before_change = {});
+
+    const MeshParameters parameters;
+
+  private:
+    void
+    create_triangulation();
+    /// Hexahedra: smooth the marks, call @p before_change, refine.
+    void
+    execute_refinement(const std::function<void()> &before_change);
+
+    MeshDescription                           description; // tetrahedra only
+    std::unique_ptr<dealii::Triangulation<3>> tria;
+    std::map<Label, unsigned int>             counts;
+    double                                    bounding_diameter;
+    std::pair<double, dealii::Point<3>>       gap;
+  };
+} // namespace RestShape
+
+#endif

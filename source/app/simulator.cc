@@ -1,0 +1,675 @@
+#include <restshape/app/simulator.h>
+#include <restshape/base/atomic_file.h>
+#include <restshape/base/input_error.h>
+#include <restshape/forward/state_transfer.h>
+#include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/mesh_pieces.h>
+
+#include <iomanip>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  Simulator::Simulator(const Parameters       &parameters,
+                       const ParameterHandler &prm,
+                       const std::string      &prm_file,
+                       const MPI_Comm          comm)
+    : parameters(parameters)
+    , prm(prm)
+    , prm_file(prm_file)
+    , comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+  {}
+
+  void
+  Simulator::run()
+  {
+    make_mesh();
+    check_scene();
+    forward = std::make_unique<ForwardProblem>(
+      parameters, *mesh, *materials, timer, pcout);
+    if (parameters.contact.enabled())
+      {
+        contact =
+          std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+        forward->set_contact(contact.get());
+      }
+    setup_problems();
+    check_scene();
+    VectorType rest = initial_rest_shape();
+    prepare_output();
+
+    SolveStatistics           stats;
+    std::optional<VectorType> guess;
+    for (unsigned int cycle = 0; cycle <= parameters.refinement.cycles; ++cycle)
+      {
+        if (cycle > 0)
+          refine(rest, guess);
+        pcout << "Cycle " << cycle << ": "
+              << mesh->triangulation().n_global_active_cells() << " cells, "
+              << forward->dof_handler().n_dofs() << " DoFs"
+              << (guess ? ", starting from the previous cycle's solution" : "")
+              << std::endl;
+        const VectorType *start = guess ? &*guess : nullptr;
+        stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
+                                             solve_forward(rest, start);
+        postprocess(cycle, stats);
+      }
+    if (parameters.prestress_comparison.enabled)
+      compare_prestress();
+    write_summary(stats);
+    timer.print_summary();
+  }
+
+  void
+  Simulator::make_mesh()
+  {
+    TimerOutput::Scope scope(timer, "Setup");
+    mesh = std::make_unique<LabelledMesh>(parameters.mesh, comm);
+    materials =
+      std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
+    if (!parameters.verification.exact_displacement.empty())
+      exact = std::make_unique<ExactDisplacement>(
+        parameters.verification.exact_displacement,
+        parameters.mesh.length_unit);
+    if (!parameters.verification.exact_rest_displacement.empty())
+      exact_rest = std::make_unique<ExactDisplacement>(
+        parameters.verification.exact_rest_displacement,
+        parameters.mesh.length_unit,
+        "Verification/Exact rest displacement");
+
+    pcout << "Mesh " << parameters.mesh.file << ": "
+          << mesh->triangulation().n_global_active_cells()
+          << (mesh->is_simplex() ? " tetrahedra" : " hexahedra") << ", labels";
+    for (const auto &[label, n] : mesh->label_counts())
+      pcout << ' ' << label << " (" << n << " coarse cells)";
+    pcout << std::endl;
+    const auto [gap, where] = mesh->narrowest_gap();
+    if (std::isfinite(gap))
+      pcout << "  " << describe_surface_gap(gap * 1e3, where * 1e3)
+            << " (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
+  }
+
+  void
+  Simulator::check_scene() const
+  {
+    const std::set<Label> labels = mesh->labels();
+    const auto check = [&](const Label l, const std::string &parameter) {
+      if (!labels.count(l))
+        throw InputError(prm_file,
+                         parameter,
+                         "label " + std::to_string(l) +
+                           " is not a label of the mesh (labels: " +
+                           to_string(labels) + ")");
+    };
+    for (const auto &f : parameters.boundary.fixed_labels)
+      check(f.label, "Boundary conditions/Fixed labels");
+    for (const Label l : parameters.loads.pressure_labels)
+      check(l, "Loads/Pressure labels");
+    for (const Label l : parameters.contact.labels)
+      check(l, "Contact/Contact labels");
+    if (parameters.refinement.strategy ==
+          RefinementParameters::Strategy::adaptive &&
+        mesh->is_simplex())
+      throw InputError(
+        prm_file,
+        "Adaptive refinement/Strategy",
+        "adaptive refinement needs hexahedra: deal.II 9.4 has no "
+        "hanging-node constraints on tetrahedra; use Mesh/Cell type "
+        "= hexahedra or Strategy = global");
+    if (!parameters.mesh.rest_shape_file.empty() &&
+        parameters.refinement.cycles > 0)
+      throw InputError(
+        prm_file,
+        "Mesh/Rest shape file",
+        "a rest shape file describes one mesh; expected Adaptive "
+        "refinement/Cycles = 0 (use Mesh/Global refinements)");
+
+    if (!forward || contact || parameters.boundary.support_stiffness > 0)
+      return;
+    // Without contact or elastic support, every displacement component must
+    // be fixed somewhere, or rigid-body motion makes the problem singular.
+    std::array<double, 3> n_fixed{{0, 0, 0}};
+    for (const Node &node : forward->owned_nodes())
+      for (unsigned int c = 0; c < 3; ++c)
+        n_fixed[c] += forward->is_fixed(node.dofs[c]);
+    for (unsigned int c = 0; c < 3; ++c)
+      if (Utilities::MPI::sum(n_fixed[c], comm) == 0)
+        throw InputError(
+          prm_file,
+          "Boundary conditions/Fixed labels",
+          std::string("no node is fixed in ") + "xyz"[c] +
+            " and there is no contact or elastic support: the problem is singular "
+            "(free rigid-body motion); expected fixed labels that "
+            "hold every component");
+  }
+
+  void
+  Simulator::setup_problems()
+  {
+    forward->setup();
+    if (contact)
+      {
+        contact->setup();
+        contact->gap_tolerance =
+          parameters.solver.newton_tolerance * mesh->diameter();
+        pcout << "Contact: " << parameters.contact.obstacle_file << ", "
+              << contact->n_candidates() << " candidate nodes, allowed side: "
+              << (parameters.contact.inside ? "inside" : "outside")
+              << std::endl;
+      }
+  }
+
+  void
+  Simulator::refine(VectorType &rest, std::optional<VectorType> &guess)
+  {
+    TimerOutput::Scope             scope(timer, "Refinement");
+    std::unique_ptr<StateTransfer> transfer;
+    const auto                     prepare = [&]() {
+      if (parameters.refinement.transfer_solution)
+        transfer = std::make_unique<StateTransfer>(
+          *forward,
+          std::vector<const VectorType *>{&forward->displacement(),
+                                          &forward->rest_displacement()});
+    };
+    if (parameters.refinement.strategy ==
+        RefinementParameters::Strategy::adaptive)
+      mesh->refine_adaptive(estimate.indicators,
+                            parameters.refinement.refine_fraction,
+                            parameters.refinement.coarsen_fraction,
+                            prepare);
+    else
+      mesh->refine_global(prepare);
+    setup_problems();
+    guess.reset();
+    rest = forward->zero_vector();
+    if (!transfer)
+      return;
+    std::vector<VectorType> fields = transfer->interpolate(*forward);
+    unsigned int            n_bad  = 0;
+    if (!forward->rest_shape_is_valid(fields[1], n_bad))
+      {
+        // The rest shape was checked at the coarse mesh's quadrature
+        // points only.
+        pcout << "  The previous rest shape inverts " << n_bad
+              << " cells of the refined mesh: starting from the unloaded "
+                 "mesh and the target shape"
+              << std::endl;
+        return;
+      }
+    guess = std::move(fields[0]);
+    rest  = std::move(fields[1]);
+  }
+
+  VectorType
+  Simulator::initial_rest_shape() const
+  {
+    if (parameters.mesh.rest_shape_file.empty())
+      return forward->zero_vector();
+    const std::vector<Point<3>> rest =
+      mesh->read_rest_shape(parameters.mesh.rest_shape_file);
+    const auto               &vertices = mesh->triangulation().get_vertices();
+    std::vector<Tensor<1, 3>> w(rest.size());
+    for (unsigned int v = 0; v < rest.size(); ++v)
+      w[v] = rest[v] - vertices[v];
+    const VectorType result = forward->interpolate_vertex_field(w);
+    unsigned int     n_bad  = 0;
+    if (!forward->rest_shape_is_valid(result, n_bad))
+      throw InputError(parameters.mesh.rest_shape_file,
+                       "Mesh/Rest shape file",
+                       std::to_string(n_bad) +
+                         " cells are inverted relative to the mesh");
+    pcout << "Rest shape: " << parameters.mesh.rest_shape_file << std::endl;
+    return result;
+  }
+
+  void
+  Simulator::prepare_output()
+  {
+    ensure_writable_directory(parameters.output.directory);
+    output = std::make_unique<OutputWriter>(parameters.output.directory,
+                                            parameters.mesh.length_unit,
+                                            comm);
+    output->write_text("parameters.prm", [&](std::ostream &out) {
+      prm.print_parameters(out, ParameterHandler::PRM);
+    });
+  }
+
+  SolveStatistics
+  Simulator::solve_forward(const VectorType &rest, const VectorType *guess)
+  {
+    const SolveStatistics stats =
+      forward->solve_from(guess, forward->scene_load(), rest);
+    pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
+          << " in " << stats.newton_iterations << " Newton iterations, "
+          << stats.load_steps << " load step(s)" << std::endl;
+    if (!stats.converged)
+      {
+        write_summary(stats);
+        throw SolverFailure("the forward solve did not converge: " +
+                            stats.failure);
+      }
+    return stats;
+  }
+
+  SolveStatistics
+  Simulator::solve_inverse(const unsigned int cycle,
+                           const VectorType  &initial_rest,
+                           const VectorType  *guess)
+  {
+    InverseProblem inverse(parameters.inverse,
+                           *forward,
+                           contact.get(),
+                           parameters.output.write_vtu ? output.get() : nullptr,
+                           timer,
+                           pcout,
+                           wall_timer);
+    inverse_result = inverse.run(initial_rest, next_step, guess);
+    next_step += inverse.records().size();
+
+    for (const InverseIterationRecord &r : inverse.records())
+      iteration_rows.push_back({double(r.iteration),
+                                r.mean_error * 1e3,
+                                r.max_error * 1e3,
+                                double(r.newton_iterations),
+                                double(r.active_contact_nodes),
+                                r.wall_seconds,
+                                double(r.anderson),
+                                double(cycle)});
+    output->write_csv("iterations.csv",
+                      {"iteration",
+                       "mean_error_mm",
+                       "max_error_mm",
+                       "newton_iterations",
+                       "active_contact_nodes",
+                       "wall_seconds",
+                       "anderson_step",
+                       "cycle"},
+                      iteration_rows);
+
+    summary.set("inverse_iterations", long(inverse_result.iterations));
+    summary.set("forward_solves", long(inverse_result.forward_solves));
+    summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
+    summary.set("mean_error_mm", inverse_result.mean_error * 1e3);
+    summary.set("max_error_mm", inverse_result.max_error * 1e3);
+
+    SolveStatistics stats;
+    stats.converged         = inverse_result.converged;
+    stats.newton_iterations = inverse_result.newton_iterations;
+    stats.load_steps        = 1;
+    stats.reference         = 1;
+    if (!inverse_result.converged)
+      {
+        stats.failure = inverse_result.reason;
+        write_summary(stats);
+        throw SolverFailure("the inverse iteration did not converge: " +
+                            inverse_result.reason);
+      }
+    pcout << "  Rest shape found in " << inverse_result.iterations
+          << " iterations (" << inverse_result.forward_solves
+          << " forward solves, " << inverse_result.newton_iterations
+          << " Newton iterations): mean error "
+          << inverse_result.mean_error * 1e3 << " mm, max "
+          << inverse_result.max_error * 1e3 << " mm" << std::endl;
+
+    // The rest shape as a mesh (vertices only: the edge nodes of quadratic
+    // elements are not in a linear mesh file), and the pre-stressed state.
+    const VectorType     &w        = forward->rest_displacement();
+    const auto           &vertices = mesh->triangulation().get_vertices();
+    std::vector<Point<3>> rest_positions(vertices);
+    for (const auto &cell : forward->dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          for (unsigned int c = 0; c < 3; ++c)
+            rest_positions[cell->vertex_index(v)][c] =
+              vertices[cell->vertex_index(v)][c] +
+              w[cell->vertex_dof_index(v, c)];
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_gmsh(
+        mesh->triangulation(),
+        [&](unsigned int v) { return rest_positions[v]; },
+        parameters.mesh.length_unit,
+        output->path("rest_shape.msh"));
+    return stats;
+  }
+
+  void
+  Simulator::compare_prestress()
+  {
+    // Table 1 of Morin et al.: the same extra force field on (1) the
+    // pre-stressed model (from its equilibrium under the scene's loads) and
+    // (2) the model stress-free in the mesh geometry (no other load).
+    const VectorType d_eq   = forward->owned_copy(forward->displacement());
+    const VectorType w_rest = forward->owned_copy(forward->rest_displacement());
+    const LoadState  scene  = forward->scene_load();
+    const Tensor<1, 3> extra =
+      parameters.prestress_comparison.extra_acceleration;
+    pcout << "Prestress comparison: extra body force " << extra << " m/s^2"
+          << std::endl;
+    LoadState loaded = scene;
+    loaded.acceleration += extra;
+    const auto check = [this](const SolveStatistics &stats,
+                              const std::string     &model) {
+      if (stats.converged)
+        return;
+      SolveStatistics failed = stats;
+      failed.failure =
+        "prestress comparison, " + model + " model: " + stats.failure;
+      write_summary(failed);
+      throw SolverFailure("the " + failed.failure);
+    };
+    const SolveStatistics s1 = forward->solve(loaded, w_rest);
+    check(s1, "pre-stressed");
+    VectorType u1 = forward->zero_vector();
+    u1            = forward->displacement();
+    u1 -= d_eq;
+    const auto prestressed = forward->nodal_norms(u1);
+
+    LoadState extra_only;
+    extra_only.acceleration = extra;
+    const SolveStatistics s2 =
+      forward->solve_from(nullptr, extra_only, forward->zero_vector());
+    check(s2, "not pre-stressed");
+    const auto unstressed = forward->nodal_norms(forward->displacement());
+
+    const auto increase = [](double a, double b) { return 100. * (b - a) / a; };
+    output->write_text("prestress_comparison.csv", [&](std::ostream &out) {
+      out
+        << std::setprecision(6)
+        << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
+        << "prestressed," << prestressed.first * 1e3 << ','
+        << prestressed.second * 1e3 << ',' << s1.newton_iterations << ','
+        << s1.converged << '\n'
+        << "not_prestressed," << unstressed.first * 1e3 << ','
+        << unstressed.second * 1e3 << ',' << s2.newton_iterations << ','
+        << s2.converged << '\n'
+        << "increase_percent," << increase(prestressed.first, unstressed.first)
+        << ',' << increase(prestressed.second, unstressed.second) << ",,\n";
+    });
+    summary.set("prestressed_mean_displacement_mm", prestressed.first * 1e3);
+    summary.set("prestressed_max_displacement_mm", prestressed.second * 1e3);
+    summary.set("not_prestressed_mean_displacement_mm", unstressed.first * 1e3);
+    summary.set("not_prestressed_max_displacement_mm", unstressed.second * 1e3);
+    pcout << "  pre-stressed: mean " << prestressed.first * 1e3 << " mm, max "
+          << prestressed.second * 1e3 << " mm; not pre-stressed: mean "
+          << unstressed.first * 1e3 << " mm, max " << unstressed.second * 1e3
+          << " mm (" << std::showpos
+          << increase(prestressed.first, unstressed.first) << " % / "
+          << increase(prestressed.second, unstressed.second) << " %)"
+          << std::noshowpos << std::endl;
+  }
+
+  void
+  Simulator::postprocess(const unsigned int cycle, const SolveStatistics &stats)
+  {
+    // Nodal displacement from the rest shape, in mm.
+    VectorType u = forward->owned_copy(forward->displacement());
+    u -= forward->owned_copy(forward->rest_displacement());
+    const auto [mean_u_m, max_u_m] = forward->nodal_norms(u);
+    const double mean_u = mean_u_m * 1e3, max_u = max_u_m * 1e3;
+    const double n_nodes =
+      Utilities::MPI::sum(double(forward->owned_nodes().size()), comm);
+
+    const Tensor<1, 3> external =
+      forward->total_external_force(forward->load());
+    const Tensor<1, 3> reaction = forward->support_reaction();
+    const Tensor<1, 3> contact_force =
+      contact ? contact->total_force(forward->raw_residual()) : Tensor<1, 3>();
+    const Tensor<1, 3> support_force = forward->elastic_support_force();
+
+    summary.set("converged", true);
+    summary.set("cell_type",
+                std::string(mesh->is_simplex() ? "tetrahedra" : "hexahedra"));
+    summary.set("polynomial_degree", long(parameters.discretization.degree));
+    summary.set("tangent", parameters.discretization.tangent_name);
+    summary.set("n_cells", long(mesh->triangulation().n_global_active_cells()));
+    summary.set("n_nodes", long(n_nodes));
+    summary.set("n_dofs", long(forward->dof_handler().n_dofs()));
+    summary.set("newton_iterations", long(stats.newton_iterations));
+    summary.set("load_steps", long(stats.load_steps));
+    if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
+      summary.set("linear_iterations_per_newton_step",
+                  double(stats.linear_iterations) /
+                    std::max(1u, stats.newton_iterations));
+    if (!parameters.inverse.enabled)
+      summary.set("relative_residual", stats.residual / stats.reference);
+    summary.set("max_displacement_mm", max_u);
+    summary.set("mean_displacement_mm", mean_u);
+    summary.set("potential_energy_J", forward->potential_energy());
+    if (!parameters.inverse.enabled && !parameters.mesh.rest_shape_file.empty())
+      {
+        // Started from a rest shape: how far the equilibrium is from the
+        // mesh (target) geometry.
+        const auto [mean_e, max_e] =
+          forward->nodal_norms(forward->displacement());
+        summary.set("mean_error_mm", mean_e * 1e3);
+        summary.set("max_error_mm", max_e * 1e3);
+        pcout << "  Equilibrium vs mesh geometry: mean " << mean_e * 1e3
+              << " mm, max " << max_e * 1e3 << " mm" << std::endl;
+      }
+    summary.set("external_force_N", external);
+    summary.set("support_reaction_N", reaction);
+    summary.set("force_balance_relative",
+                (external + reaction + contact_force + support_force).norm() /
+                  std::max(external.norm(), 1e-300));
+    if (parameters.boundary.support_stiffness > 0)
+      summary.set("elastic_support_force_N", support_force);
+    if (contact)
+      {
+        summary.set("active_contact_nodes", long(contact->n_active()));
+        summary.set("contact_force_N", contact_force);
+        summary.set("active_set_iterations",
+                    long(stats.active_set_changes + 1));
+        summary.set("max_penetration_mm",
+                    contact->max_penetration(true) * 1e3 + 0.);
+        summary.set("nodes_outside", long(contact->n_outside()));
+        const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
+        summary.set("fixed_plane_nodes", long(n_fixed));
+        summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
+        const ContactProblem::Adhesion adhesion =
+          contact->adhesion(forward->raw_residual());
+        summary.set("adhesive_contact_nodes", long(adhesion.nodes));
+        summary.set("adhesive_force_N", adhesion.force);
+        summary.set("adhesive_force_fraction", adhesion.fraction);
+        const auto [p_min, p_max] =
+          contact->pressure_range(forward->raw_residual());
+        summary.set("contact_pressure_min_Pa", p_min);
+        summary.set("contact_pressure_max_Pa", p_max);
+        summary.set("contact_patch_radius_mm",
+                    contact->patch_radius(contact_force) * 1e3);
+      }
+
+    {
+      TimerOutput::Scope scope(timer, "Error estimate");
+      estimate = estimate_error(*forward, u, parameters.refinement.estimator);
+    }
+    summary.set("estimated_error_relative", estimate.relative);
+    pcout << "  Estimated error ("
+          << (parameters.refinement.estimator ==
+                  RefinementParameters::Estimator::kelly ?
+                "Kelly" :
+                "traction jump")
+          << ", relative H1): " << estimate.relative << std::endl;
+
+    convergence_table.add_value("cycle", cycle);
+    convergence_table.add_value("cells",
+                                mesh->triangulation().n_global_active_cells());
+    convergence_table.add_value("dofs", forward->dof_handler().n_dofs());
+    std::vector<double>      row    = {double(cycle),
+                                       double(
+                                 mesh->triangulation().n_global_active_cells()),
+                                       double(forward->dof_handler().n_dofs()),
+                                       estimate.relative,
+                                       double(stats.newton_iterations),
+                                       max_u,
+                                       forward->potential_energy()};
+    std::vector<std::string> header = {"cycle",
+                                       "n_cells",
+                                       "n_dofs",
+                                       "estimated_error",
+                                       "newton_iterations",
+                                       "max_displacement_mm",
+                                       "potential_energy_J"};
+    std::vector<std::string> rated;
+    const auto               add_errors = [&](const ExactDisplacement &e,
+                                const VectorType        &field,
+                                const std::string       &prefix,
+                                const std::string       &key) {
+      const DisplacementErrors errors = e.errors(*forward, field);
+      convergence_table.add_value(prefix + "L2_rel", errors.l2_relative);
+      convergence_table.add_value(prefix + "H1_rel", errors.h1_relative);
+      convergence_table.add_value(prefix + "max_nodal_mm",
+                                  errors.max_nodal_error * 1e3);
+      for (const std::string k : {"L2_rel", "H1_rel", "max_nodal_mm"})
+        {
+          convergence_table.set_scientific(prefix + k, true);
+          convergence_table.set_precision(prefix + k, 3);
+        }
+      rated.insert(rated.end(), {prefix + "L2_rel", prefix + "H1_rel"});
+      row.insert(row.end(),
+                 {errors.l2_relative,
+                  errors.h1_relative,
+                  errors.max_nodal_error * 1e3});
+      header.insert(header.end(),
+                    {key + "l2_error_relative",
+                     key + "h1_error_relative",
+                     key + "max_nodal_error_mm"});
+      summary.set(key + "l2_error_relative", errors.l2_relative);
+      summary.set(key + "h1_error_relative", errors.h1_relative);
+      summary.set(key + "max_nodal_error_mm", errors.max_nodal_error * 1e3);
+      pcout << "  Error of the "
+            << (key.empty() ? "displacement" : "rest shape")
+            << " against the exact one: L2 " << errors.l2_relative << ", H1 "
+            << errors.h1_relative << " (relative), max nodal "
+            << errors.max_nodal_error * 1e3 << " mm" << std::endl;
+    };
+    if (exact)
+      add_errors(*exact, u, "", "");
+    if (exact_rest)
+      add_errors(*exact_rest, forward->rest_displacement(), "rest_", "rest_");
+    if (parameters.inverse.enabled)
+      {
+        row.push_back(inverse_result.mean_error * 1e3);
+        header.push_back("mean_error_mm");
+      }
+    row.push_back(wall_timer.wall_time());
+    header.push_back("wall_seconds");
+    convergence_rows.push_back(row);
+    output->write_csv("convergence.csv", header, convergence_rows);
+    if (!rated.empty() && cycle > 0)
+      {
+        ConvergenceTable table = convergence_table;
+        for (const std::string &key : rated)
+          table.evaluate_convergence_rates(
+            key, ConvergenceTable::reduction_rate_log2);
+        output->write_text("convergence.txt",
+                           [&](std::ostream &out) { table.write_text(out); });
+        if (cycle == parameters.refinement.cycles)
+          table.write_text(pcout.get_stream());
+      }
+
+    pcout << "  Displacement: max " << max_u << " mm, mean " << mean_u
+          << " mm; force balance "
+          << (external + reaction + contact_force + support_force).norm()
+          << " N of " << external.norm() << " N; potential energy "
+          << forward->potential_energy() << " J" << std::endl;
+    if (parameters.boundary.support_stiffness > 0)
+      pcout << "  Elastic support: force " << support_force << " N"
+            << std::endl;
+    if (contact)
+      {
+        pcout << "  Contact: " << contact->n_active() << " active nodes, force "
+              << contact_force << " N, largest penetration "
+              << contact->max_penetration(true) * 1e3 << " mm" << std::endl;
+        const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
+        if (n_fixed > 0)
+          pcout << "  Contact: " << n_fixed
+                << " nodes on fixed planes (their planes kept changing), up "
+                   "to "
+                << fixed_distance * 1e3 << " mm off the obstacle surface"
+                << std::endl;
+        const ContactProblem::Adhesion adhesion =
+          contact->adhesion(forward->raw_residual());
+        if (adhesion.nodes > 0)
+          pcout << "  Contact: " << adhesion.nodes
+                << " active nodes pull on the obstacle (accepted), with "
+                << adhesion.force << " N, " << 100 * adhesion.fraction
+                << " % of the contact force" << std::endl;
+      }
+    if (parameters.output.write_nodal_csv)
+      {
+        TimerOutput::Scope scope(timer, "Output");
+        const VectorType w = forward->owned_copy(forward->rest_displacement());
+        std::vector<std::vector<double>> rows;
+        for (const Node &node : forward->owned_nodes())
+          {
+            std::vector<double> row;
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(node.position[c] * output->length_scale());
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(u[node.dofs[c]] * 1e3);
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(w[node.dofs[c]] * 1e3);
+            rows.push_back(row);
+          }
+        std::vector<std::vector<double>> all_rows;
+        for (const auto &part : Utilities::MPI::gather(comm, rows))
+          all_rows.insert(all_rows.end(), part.begin(), part.end());
+        const std::string unit = parameters.mesh.length_unit_name;
+        output->write_csv("nodes.csv",
+                          {"x_" + unit,
+                           "y_" + unit,
+                           "z_" + unit,
+                           "u_x_mm",
+                           "u_y_mm",
+                           "u_z_mm",
+                           "rest_shift_x_mm",
+                           "rest_shift_y_mm",
+                           "rest_shift_z_mm"},
+                          all_rows);
+      }
+    if (parameters.output.write_vtu)
+      {
+        TimerOutput::Scope      scope(timer, "Output");
+        std::vector<NodalField> fields;
+        VectorType              contact_fields;
+        if (contact)
+          {
+            contact_fields = contact->nodal_fields(forward->raw_residual(),
+                                                   output->length_scale());
+            fields.push_back(
+              {&contact_fields,
+               {"contact_active",
+                "contact_gap_" + parameters.mesh.length_unit_name,
+                "contact_pressure_Pa"},
+               1.,
+               ""});
+          }
+        // The inverse iteration wrote its series; its final state is also
+        // the pre-stressed state a later simulation can start from.
+        const std::vector<CellField> cells = {
+          {"estimated_error", estimate.indicators}};
+        if (parameters.inverse.enabled)
+          output->write_fields(
+            *forward, 0, 0, fields, cells, "prestressed_state");
+        else
+          output->write_fields(*forward, next_step++, cycle, fields, cells);
+      }
+  }
+
+  void
+  Simulator::write_summary(const SolveStatistics &stats)
+  {
+    if (!stats.converged)
+      {
+        summary.set("converged", false);
+        summary.set("failure", stats.failure);
+        summary.set("newton_iterations", long(stats.newton_iterations));
+      }
+    summary.set("wall_seconds", wall_timer.wall_time());
+    output->write_text("summary.json",
+                       [&](std::ostream &out) { summary.write(out); });
+  }
+} // namespace RestShape

@@ -1,0 +1,171 @@
+// restshape: command line front end.
+//
+//   restshape SCENE.prm                     run a scene
+//   restshape --set 'Sub/Param=value' ...   override parameters (repeatable)
+//   restshape --print-parameters            all parameters with defaults
+//
+// Exit codes: 0 success, 1 bad input, 2 a solver did not converge,
+// 3 internal error.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <restshape/app/simulator.h>
+#include <restshape/base/input_error.h>
+#include <restshape/base/parameters.h>
+#include <restshape/forward/linear_solver.h>
+
+#include <filesystem>
+#include <iostream>
+
+using namespace dealii;
+using namespace RestShape;
+
+namespace
+{
+  const char *usage =
+    "usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm\n"
+    "       restshape --print-parameters\n";
+
+  /// Apply "Sub/Sub/Parameter=value" to @p prm.
+  void
+  apply_override(ParameterHandler &prm, const std::string &assignment)
+  {
+    const auto equal = assignment.find('=');
+    if (equal == std::string::npos)
+      throw InputError("--set",
+                       assignment,
+                       "expected 'Subsection/Parameter=value'");
+    const std::string path  = Utilities::trim(assignment.substr(0, equal));
+    const std::string value = Utilities::trim(assignment.substr(equal + 1));
+    const auto        parts = Utilities::split_string_list(path, '/');
+    if (parts.size() < 2)
+      throw InputError("--set", path, "expected 'Subsection/Parameter=value'");
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.enter_subsection(parts[i]);
+    try
+      {
+        prm.set(parts.back(), value);
+      }
+    catch (const std::exception &exc)
+      {
+        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+          prm.leave_subsection();
+        throw InputError("--set", path, one_line_message(exc));
+      }
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc,
+                                       argv,
+                                       numbers::invalid_unsigned_int);
+  match_blas_threads_to_deal_ii();
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+  std::string    prm_file;
+
+  try
+    {
+      ParameterHandler prm;
+      Parameters::declare_parameters(prm);
+
+      std::vector<std::string> overrides;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--print-parameters")
+            {
+              if (root)
+                prm.print_parameters(std::cout, ParameterHandler::PRM);
+              return 0;
+            }
+          else if (arg == "--help" || arg == "-h")
+            {
+              if (root)
+                std::cout << usage;
+              return 0;
+            }
+          else if (arg == "--set")
+            {
+              if (i + 1 >= argc)
+                throw InputError("--set",
+                                 "",
+                                 "missing 'Subsection/Parameter=value'");
+              overrides.emplace_back(argv[++i]);
+            }
+          else if (arg.rfind("--set=", 0) == 0)
+            overrides.push_back(arg.substr(6));
+          else if (!arg.empty() && arg[0] == '-')
+            throw InputError(arg, "", "unknown option; see restshape --help");
+          else if (prm_file.empty())
+            prm_file = arg;
+          else
+            throw InputError(arg, "", "more than one scene file given");
+        }
+      if (prm_file.empty())
+        throw InputError(
+          "",
+          "",
+          "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(prm_file, ec))
+        throw InputError(prm_file, "", "no such scene file");
+
+      try
+        {
+          prm.parse_input(prm_file, "", false, true);
+        }
+      catch (const std::exception &exc)
+        {
+          throw InputError(prm_file, "", one_line_message(exc));
+        }
+      for (const std::string &o : overrides)
+        apply_override(prm, o);
+
+      Parameters parameters;
+      parameters.parse_parameters(prm);
+      // Destroy the simulator (and its TimerOutput, which prints a banner
+      // when destroyed during stack unwinding) before reporting an error.
+      std::exception_ptr error;
+      {
+        Simulator simulator(parameters, prm, prm_file, comm);
+        try
+          {
+            simulator.run();
+          }
+        catch (...)
+          {
+            error = std::current_exception();
+          }
+      }
+      if (error)
+        std::rethrow_exception(error);
+    }
+  catch (const InputError &exc)
+    {
+      const InputError e = exc.file.empty() ? exc.in_file(prm_file) : exc;
+      if (root)
+        std::cerr << "restshape: error: " << e.what() << std::endl;
+      return 1;
+    }
+  catch (const SolverFailure &exc)
+    {
+      if (root)
+        std::cerr << "restshape: error: " << prm_file << ": " << exc.what()
+                  << std::endl;
+      return 2;
+    }
+  catch (const std::exception &exc)
+    {
+      if (root)
+        std::cerr << "restshape: internal error: " << prm_file << ": "
+                  << one_line_message(exc) << std::endl;
+      return 3;
+    }
+  return 0;
+}

@@ -1,0 +1,255 @@
+// restshape-brain-labels: the labelled brain image of the paper's scene,
+// built from Debian's mricron-data (Colin27 on the MNI grid).
+//
+//   restshape-brain-labels --brain ch2bet.nii.gz --atlas aal.nii.gz
+//       --out LABELS.nii.gz [--tumour X,Y,Z --tumour-radius MM]
+//       [--brainstem-half-width MM]
+//
+// Labels: 1 cerebrum, 2 tumour, 3 cerebellum, 4 brainstem.
+//  - brain: the largest connected component of the non-zero voxels of
+//    --brain, its cavities filled;
+//  - cerebellum: AAL indices 91-116 (cerebellum and vermis);
+//  - cerebrum: AAL indices 1-90;
+//  - brainstem: brain voxels without an AAL index, below the lowest cerebral
+//    voxel and within --brainstem-half-width mm of the midline (x = 0);
+//  - the remaining brain voxels (white matter, unlabelled rim) take the label
+//    of the nearest labelled voxel;
+//  - tumour: the brain voxels within --tumour-radius mm of --tumour (MNI mm);
+//  - finally every label keeps only its largest connected piece; the other
+//    pieces are given to their neighbours, so that each region is one solid.
+#include <restshape/base/command_line.h>
+#include <restshape/base/input_error.h>
+#include <restshape/mesher/labelled_image.h>
+
+#include <algorithm>
+#include <deque>
+#include <iostream>
+
+using namespace RestShape;
+
+namespace
+{
+  constexpr std::uint8_t cerebrum = 1, tumour = 2, cerebellum = 3,
+                         brainstem = 4, unknown = 255;
+
+  /// 6-neighbours of voxel v of @p image (those inside the grid).
+  template <typename F>
+  void
+  for_neighbours(const LabelledImage &image, const std::size_t v, const F &f)
+  {
+    const std::size_t nx = image.size[0], ny = image.size[1],
+                      nz = image.size[2];
+    const std::size_t i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
+    if (i > 0)
+      f(v - 1);
+    if (i + 1 < nx)
+      f(v + 1);
+    if (j > 0)
+      f(v - nx);
+    if (j + 1 < ny)
+      f(v + nx);
+    if (k > 0)
+      f(v - nx * ny);
+    if (k + 1 < nz)
+      f(v + nx * ny);
+  }
+
+  /// Connected components (6-connectivity) of the voxels where @p in is true;
+  /// returns the component index of every voxel (-1 outside) and their sizes.
+  std::pair<std::vector<int>, std::vector<std::size_t>>
+  components(const LabelledImage &image, const std::vector<bool> &in)
+  {
+    std::vector<int>         component(in.size(), -1);
+    std::vector<std::size_t> sizes;
+    std::deque<std::size_t>  queue;
+    for (std::size_t seed = 0; seed < in.size(); ++seed)
+      if (in[seed] && component[seed] < 0)
+        {
+          const int c     = sizes.size();
+          component[seed] = c;
+          sizes.push_back(0);
+          queue.push_back(seed);
+          while (!queue.empty())
+            {
+              const std::size_t v = queue.front();
+              queue.pop_front();
+              ++sizes[c];
+              for_neighbours(image, v, [&](const std::size_t w) {
+                if (in[w] && component[w] < 0)
+                  {
+                    component[w] = c;
+                    queue.push_back(w);
+                  }
+              });
+            }
+        }
+    return {component, sizes};
+  }
+
+  /// Give every brain voxel labelled `unknown` the label of the nearest
+  /// (in 6-connected steps through the brain) labelled voxel.
+  void
+  fill_unknown(LabelledImage &labels)
+  {
+    std::deque<std::size_t> queue;
+    for (std::size_t v = 0; v < labels.labels.size(); ++v)
+      if (labels.labels[v] != 0 && labels.labels[v] != unknown)
+        queue.push_back(v);
+    while (!queue.empty())
+      {
+        const std::size_t v = queue.front();
+        queue.pop_front();
+        for_neighbours(labels, v, [&](const std::size_t w) {
+          if (labels.labels[w] == unknown)
+            {
+              labels.labels[w] = labels.labels[v];
+              queue.push_back(w);
+            }
+        });
+      }
+  }
+
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      std::string           brain_file, atlas_file, out;
+      std::array<double, 3> centre{{-32, 28, 28}};
+      double                radius = 12, half_width = 16;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (i + 1 >= argc)
+            throw InputError("", arg, "missing value");
+          const std::string value = argv[++i];
+          if (arg == "--brain")
+            brain_file = value;
+          else if (arg == "--atlas")
+            atlas_file = value;
+          else if (arg == "--out")
+            out = value;
+          else if (arg == "--tumour")
+            centre = parse_triple(arg, value);
+          else if (arg == "--tumour-radius")
+            radius = parse_positive(arg, value);
+          else if (arg == "--brainstem-half-width")
+            half_width = parse_positive(arg, value);
+          else
+            throw InputError("", arg, "unknown option");
+        }
+      if (brain_file.empty() || atlas_file.empty() || out.empty())
+        throw InputError("",
+                         "--brain",
+                         "usage: restshape-brain-labels --brain ch2bet.nii.gz "
+                         "--atlas aal.nii.gz --out LABELS.nii.gz");
+
+      const LabelledImage brain = read_labelled_image(brain_file, "--brain");
+      const LabelledImage atlas = read_labelled_image(atlas_file, "--atlas");
+      if (brain.size != atlas.size ||
+          (brain.index_to_mm - atlas.index_to_mm).norm() > 1e-6 ||
+          (brain.offset - atlas.offset).norm() > 1e-6)
+        throw InputError(
+          atlas_file,
+          "--atlas",
+          "not on the grid of --brain; expected both on the same voxel grid");
+
+      const std::size_t n = brain.labels.size();
+      // The brain: largest component of the mask, cavities filled.
+      std::vector<bool> in(n);
+      for (std::size_t v = 0; v < n; ++v)
+        in[v] = brain.labels[v] != 0;
+      {
+        const auto [component, sizes] = components(brain, in);
+        const int largest =
+          std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+        for (std::size_t v = 0; v < n; ++v)
+          in[v] = component[v] == largest;
+      }
+      {
+        std::vector<bool> out_of_brain(n);
+        for (std::size_t v = 0; v < n; ++v)
+          out_of_brain[v] = !in[v];
+        const auto [component, sizes] = components(brain, out_of_brain);
+        const int outside = component[0]; // the corner voxel is background
+        for (std::size_t v = 0; v < n; ++v)
+          if (!in[v] && component[v] != outside)
+            in[v] = true;
+      }
+
+      LabelledImage labels          = brain;
+      unsigned int  lowest_cerebral = brain.size[2];
+      for (std::size_t v = 0; v < n; ++v)
+        if (in[v] && atlas.labels[v] >= 1 && atlas.labels[v] <= 90)
+          lowest_cerebral = std::min<unsigned int>(
+            lowest_cerebral, v / (std::size_t(brain.size[0]) * brain.size[1]));
+      for (unsigned int k = 0; k < brain.size[2]; ++k)
+        for (unsigned int j = 0; j < brain.size[1]; ++j)
+          for (unsigned int i = 0; i < brain.size[0]; ++i)
+            {
+              const std::size_t  v = brain.index(i, j, k);
+              const std::uint8_t a = atlas.labels[v];
+              std::uint8_t      &l = labels.labels[v];
+              if (!in[v])
+                l = 0;
+              else if (a >= 91 && a <= 116)
+                l = cerebellum;
+              else if (a >= 1 && a <= 90)
+                l = cerebrum;
+              else if (k < lowest_cerebral &&
+                       std::abs(brain.position(i, j, k)[0]) < half_width)
+                l = brainstem;
+              else
+                l = unknown;
+            }
+      fill_unknown(labels);
+      for (unsigned int k = 0; k < brain.size[2]; ++k)
+        for (unsigned int j = 0; j < brain.size[1]; ++j)
+          for (unsigned int i = 0; i < brain.size[0]; ++i)
+            {
+              const std::size_t v = brain.index(i, j, k);
+              const auto        x = brain.position(i, j, k);
+              if (in[v] && x.distance(dealii::Point<3>(centre[0],
+                                                       centre[1],
+                                                       centre[2])) <= radius)
+                labels.labels[v] = tumour;
+            }
+
+      // One connected piece per label.
+      for (const std::uint8_t label : {cerebrum, tumour, cerebellum, brainstem})
+        {
+          std::vector<bool> mine(n);
+          for (std::size_t v = 0; v < n; ++v)
+            mine[v] = labels.labels[v] == label;
+          const auto [component, sizes] = components(labels, mine);
+          if (sizes.empty())
+            throw InputError(out,
+                             "--tumour",
+                             "label " + std::to_string(label) +
+                               " is empty; check the inputs");
+          const int largest =
+            std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+          for (std::size_t v = 0; v < n; ++v)
+            if (mine[v] && component[v] != largest)
+              labels.labels[v] = unknown;
+        }
+      fill_unknown(labels);
+
+      write_labelled_image(labels, out, "--out");
+      std::cout << out
+                << ": cerebrum 1, tumour 2, cerebellum 3, brainstem 4 (voxels:";
+      for (const auto &[label, count] : labels.label_counts())
+        std::cout << " " << label << ":" << count;
+      std::cout << "), brainstem below voxel row z = " << lowest_cerebral
+                << std::endl;
+    }
+  catch (const std::exception &exc)
+    {
+      std::cerr << "restshape-brain-labels: error: " << one_line_message(exc)
+                << std::endl;
+      return 1;
+    }
+  return 0;
+}

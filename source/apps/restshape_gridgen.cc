@@ -1,0 +1,222 @@
+// restshape-gridgen: structured meshes for tests and benchmarks.
+//
+//   restshape-gridgen --size LX,LY,LZ --subdivisions NX,NY,NZ
+//       [--origin X,Y,Z] [--cell-type tetrahedra|tetrahedra24|hexahedra]
+//       [--label L] [--slab AXIS:MIN:MAX:LABEL]... --out FILE.msh
+//
+// A box [origin, origin + size] (units as given, usually mm) split into
+// NX x NY x NZ hexahedra, or each hexahedron into six tetrahedra (the
+// Freudenthal split along the main diagonal, conforming across cells), or
+// into 24 tetrahedra through face and cell centres (deal.II's
+// convert_hypercube_to_simplex_mesh: a mesh with the symmetries of the box).
+// Every cell gets label L (default 1), then each --slab relabels the cells
+// whose centroid satisfies MIN <= coordinate AXIS <= MAX.
+//
+//   restshape-gridgen --hemisphere R --refinements N [--grading G]
+//       [--cell-type ...] --out FILE.msh
+//
+// A hemisphere, dome down with its pole at the origin (see
+// make_hemisphere()): label 2 for the cells on the flat top, 1 below.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <restshape/base/command_line.h>
+#include <restshape/base/input_error.h>
+#include <restshape/mesh/generated_meshes.h>
+#include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/labelled_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+
+using namespace dealii;
+using namespace RestShape;
+
+namespace
+{
+  struct Slab
+  {
+    unsigned int axis;
+    double       min, max;
+    Label        label;
+  };
+
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      std::array<double, 3>       size{{1, 1, 1}}, origin{{0, 0, 0}};
+      std::array<unsigned int, 3> n{{1, 1, 1}};
+      bool                        tets = true, tets24 = false;
+      Label                       label = 1;
+      std::vector<Slab>           slabs;
+      std::string                 out;
+      double                      hemisphere = 0, grading = 1;
+      unsigned int                refinements = 0;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (i + 1 >= argc)
+            throw InputError("", arg, "missing value");
+          const std::string value = argv[++i];
+          if (arg == "--size")
+            size = parse_triple(arg, value);
+          else if (arg == "--origin")
+            origin = parse_triple(arg, value);
+          else if (arg == "--subdivisions")
+            {
+              const auto t = parse_triple(arg, value);
+              for (unsigned int d = 0; d < 3; ++d)
+                n[d] = static_cast<unsigned int>(t[d]);
+            }
+          else if (arg == "--cell-type")
+            {
+              tets   = (value == "tetrahedra");
+              tets24 = (value == "tetrahedra24");
+              if (!tets && !tets24 && value != "hexahedra")
+                throw InputError(
+                  "", arg, "expected tetrahedra, tetrahedra24 or hexahedra");
+            }
+          else if (arg == "--label")
+            label = std::stoi(value);
+          else if (arg == "--slab")
+            {
+              const auto f = Utilities::split_string_list(value, ':');
+              if (f.size() != 4 || f[0].size() != 1 || f[0][0] < 'x' ||
+                  f[0][0] > 'z')
+                throw InputError("",
+                                 arg,
+                                 "expected AXIS:MIN:MAX:LABEL, e.g. z:0:5:2");
+              slabs.push_back({unsigned(f[0][0] - 'x'),
+                               std::stod(f[1]),
+                               std::stod(f[2]),
+                               Label(std::stoi(f[3]))});
+            }
+          else if (arg == "--out")
+            out = value;
+          else if (arg == "--hemisphere")
+            hemisphere = std::stod(value);
+          else if (arg == "--refinements")
+            refinements = std::stoi(value);
+          else if (arg == "--grading")
+            grading = std::stod(value);
+
+          else
+            throw InputError("", arg, "unknown option");
+        }
+      if (out.empty())
+        throw InputError("", "--out", "no output file given");
+
+      if (hemisphere > 0)
+        {
+          Triangulation<3> hexes, tria;
+          make_hemisphere(hexes, hemisphere, refinements, grading);
+          if (tets || tets24)
+            GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+          else
+            tria.copy_triangulation(hexes);
+          write_gmsh(
+            tria,
+            [&](unsigned int v) { return tria.get_vertices()[v]; },
+            1.0,
+            out);
+          std::cout << out << ": " << tria.n_active_cells() << " cells, "
+                    << tria.n_used_vertices() << " vertices" << std::endl;
+          return 0;
+        }
+
+      MeshDescription mesh;
+      const auto      vertex_index =
+        [&](unsigned int i, unsigned int j, unsigned int k) {
+          return (k * (n[1] + 1) + j) * (n[0] + 1) + i;
+        };
+      for (unsigned int k = 0; k <= n[2]; ++k)
+        for (unsigned int j = 0; j <= n[1]; ++j)
+          for (unsigned int i = 0; i <= n[0]; ++i)
+            mesh.vertices.emplace_back(origin[0] + size[0] * i / n[0],
+                                       origin[1] + size[1] * j / n[1],
+                                       origin[2] + size[2] * k / n[2]);
+      for (unsigned int k = 0; k < n[2]; ++k)
+        for (unsigned int j = 0; j < n[1]; ++j)
+          for (unsigned int i = 0; i < n[0]; ++i)
+            {
+              // Hexahedron vertices in deal.II's lexicographic order.
+              std::array<unsigned int, 8> hex;
+              for (unsigned int v = 0; v < 8; ++v)
+                hex[v] = vertex_index(i + (v & 1),
+                                      j + ((v >> 1) & 1),
+                                      k + ((v >> 2) & 1));
+              Point<3> centre;
+              for (const unsigned int v : hex)
+                centre += mesh.vertices[v] / 8.;
+              Label cell_label = label;
+              for (const Slab &s : slabs)
+                if (centre[s.axis] >= s.min && centre[s.axis] <= s.max)
+                  cell_label = s.label;
+
+              if (!tets || tets24)
+                {
+                  CellData<3> cell(8);
+                  cell.vertices.assign(hex.begin(), hex.end());
+                  cell.material_id = cell_label;
+                  mesh.cells.push_back(cell);
+                  continue;
+                }
+              // Freudenthal: one tetrahedron per path 0 -> 7 along the axes.
+              std::array<unsigned int, 3> axes{{0, 1, 2}};
+              do
+                {
+                  CellData<3>  cell(4);
+                  unsigned int corner = 0;
+                  cell.vertices[0]    = hex[0];
+                  for (unsigned int s = 0; s < 3; ++s)
+                    {
+                      corner |= 1u << axes[s];
+                      cell.vertices[s + 1] = hex[corner];
+                    }
+                  const auto &v = mesh.vertices;
+                  const auto &c = cell.vertices;
+                  if (cross_product_3d(v[c[1]] - v[c[0]], v[c[2]] - v[c[0]]) *
+                        (v[c[3]] - v[c[0]]) <
+                      0)
+                    std::swap(cell.vertices[1], cell.vertices[2]);
+                  cell.material_id = cell_label;
+                  mesh.cells.push_back(cell);
+                }
+              while (std::next_permutation(axes.begin(), axes.end()));
+            }
+
+      std::size_t n_cells    = mesh.cells.size(),
+                  n_vertices = mesh.vertices.size();
+      if (tets24)
+        {
+          Triangulation<3> hexes, tria;
+          hexes.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
+          GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+          write_gmsh(
+            tria,
+            [&](unsigned int v) { return tria.get_vertices()[v]; },
+            1.0,
+            out);
+          n_cells    = tria.n_active_cells();
+          n_vertices = tria.n_used_vertices();
+        }
+      else
+        write_gmsh(mesh, 1.0, out);
+      std::cout << out << ": " << n_cells
+                << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
+                << n_vertices << " vertices" << std::endl;
+    }
+  catch (const std::exception &exc)
+    {
+      std::cerr << "restshape-gridgen: error: " << exc.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}

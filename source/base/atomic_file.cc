@@ -1,0 +1,94 @@
+#include <restshape/base/atomic_file.h>
+#include <restshape/base/input_error.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace RestShape
+{
+  void
+  write_file_atomically(const std::string                         &path,
+                        const std::function<void(std::ostream &)> &write,
+                        const std::string                         &parameter)
+  {
+    const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+    {
+      std::ofstream out(tmp);
+      if (!out)
+        throw InputError(path,
+                         parameter,
+                         std::string("cannot write: ") + std::strerror(errno) +
+                           "; expected a writable location");
+      write(out);
+      out.flush();
+      if (!out)
+        {
+          std::remove(tmp.c_str());
+          throw InputError(path, parameter, "writing failed (disk full?)");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+      {
+        const std::string reason = std::strerror(errno);
+        std::remove(tmp.c_str());
+        throw InputError(path,
+                         parameter,
+                         "cannot rename into place: " + reason);
+      }
+  }
+
+  void
+  write_named_file_atomically(
+    const std::string                              &path,
+    const std::function<bool(const std::string &)> &write,
+    const std::string                              &parameter,
+    const std::string                              &message)
+  {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    const fs::path tmp =
+      target.parent_path() /
+      (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
+    std::error_code ec;
+    if (!write(tmp.string()) || !fs::exists(tmp, ec))
+      {
+        fs::remove(tmp, ec);
+        throw InputError(path, parameter, message);
+      }
+    fs::rename(tmp, target, ec);
+    if (ec)
+      {
+        fs::remove(tmp, ec);
+        throw InputError(path,
+                         parameter,
+                         "cannot rename into place: " + ec.message());
+      }
+  }
+
+  void
+  ensure_writable_directory(const std::string &directory,
+                            const std::string &parameter)
+  {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(directory, ec) && !fs::is_directory(directory, ec))
+      throw InputError(directory,
+                       parameter,
+                       "exists and is not a directory; expected a directory "
+                       "for the results");
+    fs::create_directories(directory, ec);
+    if (ec)
+      throw InputError(directory,
+                       parameter,
+                       "cannot create the directory: " + ec.message());
+    if (::access(directory.c_str(), W_OK | X_OK) != 0)
+      throw InputError(directory,
+                       parameter,
+                       "the directory is not writable; expected a directory "
+                       "where results can be written");
+  }
+} // namespace RestShape

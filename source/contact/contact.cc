@@ -1,0 +1,737 @@
+// ContactProblem: candidates, the primal-dual active set with held planes,
+// thaws of pulling nodes and the constraints for Newton (what it reports is
+// in contact_report.cc).
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <restshape/base/input_error.h>
+#include <restshape/contact/contact.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  ContactProblem::ContactProblem(const ContactParameters &parameters,
+                                 const ForwardProblem    &forward,
+                                 TimerOutput             &timer)
+    // Gaps are resolved as tightly as the residual (relative to the body's
+    // size), but never tighter than 1e-10 of it.
+    : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) *
+                    forward.mesh().diameter())
+    , parameters(parameters)
+    , forward(forward)
+    , timer(timer)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    obstacle = std::make_unique<Obstacle>(parameters.obstacle_file,
+                                          parameters.length_unit,
+                                          parameters.inside);
+  }
+
+  ContactProblem::~ContactProblem() = default;
+
+  void
+  ContactProblem::setup()
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    const auto        &fe = forward.fe();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const auto &nodes = forward.relevant_nodes();
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      node_of_dof[nodes[n].dofs[0]] = n;
+
+    candidates.clear();
+    faces.clear();
+    std::map<types::global_dof_index, unsigned int> candidate_of_dof;
+    FEFaceValues<3>                                 fv(forward.mapping(),
+                       fe,
+                       forward.face_quadrature(),
+                       update_values | update_JxW_values |
+                         update_normal_vectors);
+    std::vector<types::global_dof_index>            dofs(fe.n_dofs_per_cell());
+    const auto &constraints = forward.base_constraints();
+
+    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      {
+        if (cell->is_artificial() ||
+            (!parameters.labels.empty() &&
+             !parameters.labels.count(cell->material_id())))
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            cell->get_dof_indices(dofs);
+            fv.reinit(cell, f);
+            double              face_area = 0, mass_sum = 0;
+            Face                face;
+            std::vector<double> mass;
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                face_area += fv.JxW(q);
+                face.normal += fv.normal_vector(q) * fv.JxW(q);
+              }
+            face.normal /= face.normal.norm();
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                if (fe.system_to_component_index(i).first != 0)
+                  continue;
+                // A shape function without support on the face vanishes
+                // there (FE_SimplexP::has_support_on_face() answers true for
+                // every shape function in deal.II 9.4).
+                double m = 0, a = 0;
+                for (const unsigned int q : fv.quadrature_point_indices())
+                  {
+                    m +=
+                      fv.shape_value(i, q) * fv.shape_value(i, q) * fv.JxW(q);
+                    a += fv.shape_value(i, q) * fv.JxW(q);
+                  }
+                if (m <= 1e-12 * face_area)
+                  continue;
+                const Node &node = nodes[node_of_dof.at(dofs[i])];
+                // Fully fixed nodes, and hanging nodes (their parents carry
+                // the contact), are not candidates.
+                std::array<bool, 3> fixed;
+                bool                hanging = false;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    fixed[c] = forward.is_fixed(node.dofs[c]);
+                    hanging |=
+                      constraints.is_constrained(node.dofs[c]) && !fixed[c];
+                  }
+                if (hanging || (fixed[0] && fixed[1] && fixed[2]))
+                  continue;
+                auto it = candidate_of_dof.find(dofs[i]);
+                if (it == candidate_of_dof.end())
+                  {
+                    Candidate c;
+                    c.node  = node;
+                    c.fixed = fixed;
+                    c.owned =
+                      forward.locally_owned_dofs().is_element(node.dofs[0]);
+                    it = candidate_of_dof.emplace(dofs[i], candidates.size())
+                           .first;
+                    candidates.push_back(c);
+                  }
+                face.nodes.push_back(it->second);
+                mass.push_back(m);
+                face.integral.push_back(a);
+                mass_sum += m;
+              }
+            // HRZ lumping: the diagonal of the face mass matrix, scaled to
+            // the face area (positive for every element type).
+            for (unsigned int k = 0; k < face.nodes.size(); ++k)
+              {
+                face.lumped.push_back(mass[k] * face_area / mass_sum);
+                candidates[face.nodes[k]].area_lumped += face.lumped.back();
+              }
+            if (!face.nodes.empty())
+              faces.push_back(face);
+          }
+      }
+
+    h_min    = forward.mesh().minimum_cell_diameter();
+    c_scaled = parameters.active_set_constant *
+               forward.materials().max_youngs_modulus() / h_min;
+    history.clear();
+  }
+
+  Point<3>
+  ContactProblem::position(const Candidate &c, const VectorType &d) const
+  {
+    Point<3> x = c.node.position;
+    for (unsigned int k = 0; k < 3; ++k)
+      x[k] += d[c.node.dofs[k]];
+    return x;
+  }
+
+  double
+  ContactProblem::contact_force(const Candidate  &c,
+                                const VectorType &raw_residual) const
+  {
+    return reaction(c, raw_residual) * c.normal;
+  }
+
+  Tensor<1, 3>
+  ContactProblem::reaction(const Candidate     &c,
+                           const VectorType    &raw_residual,
+                           std::vector<double> *multipliers) const
+  {
+    // At equilibrium f_ext - f_int + sum_i lambda_i n_i = 0 at the node:
+    // lambda = -r . n on one plane, least squares over held planes.
+    Tensor<1, 3> r;
+    for (unsigned int k = 0; k < 3; ++k)
+      r[k] = -raw_residual[c.node.dofs[k]];
+    if (c.held.empty())
+      return (r * c.normal) * c.normal;
+    const unsigned int m = c.held.size();
+    FullMatrix<double> gram(m, m);
+    Vector<double>     rhs(m), lambda(m);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        rhs[i] = c.held[i].normal * r;
+        for (unsigned int j = 0; j < m; ++j)
+          gram(i, j) = c.held[i].normal * c.held[j].normal;
+      }
+    gram.gauss_jordan();
+    gram.vmult(lambda, rhs);
+    Tensor<1, 3> force;
+    for (unsigned int i = 0; i < m; ++i)
+      force += lambda[i] * c.held[i].normal;
+    if (multipliers != nullptr)
+      multipliers->assign(lambda.begin(), lambda.end());
+    return force;
+  }
+
+  void
+  ContactProblem::share_flags()
+  {
+    // The owner of a node decides; ghost copies follow, so that every
+    // process builds the same constraints.
+    const MPI_Comm comm = communicator();
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      {
+        for (Candidate &c : candidates)
+          c.dropped = 0;
+        return;
+      }
+    VectorType flags(forward.locally_owned_dofs(), comm);
+    for (const Candidate &c : candidates)
+      if (c.owned)
+        flags[c.node.dofs[0]] =
+          (c.active ? 1 : 0) + (c.eligible ? 2 : 0) + 4 * c.dropped;
+    flags.compress(VectorOperation::insert);
+    VectorType ghosted(forward.locally_owned_dofs(),
+                       forward.locally_relevant_dofs(),
+                       comm);
+    ghosted = flags;
+    for (Candidate &c : candidates)
+      if (!c.owned)
+        {
+          const int f = static_cast<int>(std::lround(ghosted[c.node.dofs[0]]));
+          c.active    = (f & 1) != 0;
+          c.eligible  = (f & 2) != 0;
+          // Held planes its owner let go (thaw_if_adhesive()).
+          drop_planes(c, f / 4);
+        }
+    for (Candidate &c : candidates)
+      c.dropped = 0;
+  }
+
+  void
+  ContactProblem::drop_planes(Candidate &c, const unsigned int mask)
+  {
+    for (int i = int(c.held.size()) - 1; i >= 0; --i)
+      if (mask & (1u << i))
+        c.held.erase(c.held.begin() + i);
+    if (mask != 0 && !c.held.empty())
+      set_normal_from_held(c);
+  }
+
+  void
+  ContactProblem::begin_solve(const VectorType &d)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    history.clear();
+    releases_frozen = false;
+    n_added = n_released = 0;
+    n_updates = n_thaws   = 0;
+    n_grazing_pulling     = 0;
+    grazing_pull_fraction = 0;
+    for (Candidate &c : candidates)
+      {
+        const Point<3> x    = position(c, d);
+        const Gap      g    = obstacle->gap(x);
+        c.gap               = g.gap;
+        c.normal            = g.normal;
+        c.previous_position = x;
+        // Warm start: the active set of the last solve, for nodes that are
+        // on the allowed side and within a cell size of the obstacle now.
+        c.eligible = g.gap >= -gap_tolerance;
+        c.active   = c.active && c.eligible && g.gap < h_min;
+        c.pulled   = false;
+        c.grazing  = false;
+        c.face     = Plane();
+        let_go(c);
+      }
+    share_flags();
+  }
+
+  void
+  ContactProblem::let_go(Candidate &c)
+  {
+    c.fixed_planes  = false;
+    c.plane_changes = 0;
+    c.left.clear();
+    c.held.clear();
+    c.planes_imposed = true;
+  }
+
+  double
+  ContactProblem::constrained_gap(const Candidate &c)
+  {
+    if (!(c.fixed_planes && c.active && !c.held.empty()))
+      return c.gap;
+    if (!c.planes_imposed)
+      return c.mean_plane.gap;
+    double gap = 0;
+    for (const Plane &p : c.held)
+      if (std::abs(p.gap) > std::abs(gap))
+        gap = p.gap;
+    return gap;
+  }
+
+  ContactProblem::State
+  ContactProblem::state() const
+  {
+    State s(candidates.size());
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      s[i] = {candidates[i].active, candidates[i].eligible};
+    return s;
+  }
+
+  void
+  ContactProblem::set_state(const State &s)
+  {
+    if (s.size() != candidates.size())
+      return;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      std::tie(candidates[i].active, candidates[i].eligible) = s[i];
+  }
+
+  void
+  ContactProblem::reset()
+  {
+    for (Candidate &c : candidates)
+      c.active = false;
+  }
+
+  bool
+  ContactProblem::update_active_set(const VectorType &d,
+                                    const VectorType &raw_residual,
+                                    const bool        first_iteration)
+  {
+    TimerOutput::Scope scope(timer, "Contact search");
+    const MPI_Comm     comm = communicator();
+    n_added = n_released = 0;
+    std::size_t hash     = 0;
+    for (Candidate &c : candidates)
+      {
+        const Point<3> x = position(c, d);
+        const Gap      g = obstacle->gap(x);
+        c.gap            = g.gap;
+        // While releases are frozen (the active set only grows) an active
+        // node follows the closest face, or holds the planes of a crease;
+        // otherwise, and for inactive nodes, the smoothed normal.
+        if (releases_frozen && c.active)
+          update_held_planes(c, x, g);
+        else
+          {
+            c.normal = g.normal;
+            let_go(c);
+          }
+        c.face = Plane{g.gradient, x - g.gap * g.gradient, g.gap};
+        if (c.owned && !c.eligible &&
+            (g.gap >= -gap_tolerance ||
+             obstacle->n_crossings(c.previous_position, x) >= 2))
+          c.eligible = true;
+        c.previous_position = x;
+        if (!c.owned)
+          continue;
+
+        bool now_active = false;
+        if (c.eligible)
+          {
+            // Pressure of an active node; no release on the first iteration
+            // (the residual is that of another state).
+            const double p =
+              !c.active       ? 0. :
+              first_iteration ? std::numeric_limits<double>::max() :
+                                contact_force(c, raw_residual) / c.area_lumped;
+            now_active = p - c_scaled * (c.gap - gap_tolerance) > 0;
+            // A node released for pulling (thaw_if_adhesive) comes back
+            // only if it goes through the obstacle.
+            if (c.pulled && !c.active)
+              {
+                now_active = c.gap < -gap_tolerance;
+                c.grazing  = c.grazing || now_active;
+              }
+            if (releases_frozen && c.active)
+              now_active = true;
+          }
+        n_added += (now_active && !c.active);
+        n_released += (!now_active && c.active);
+        c.active = now_active;
+        if (now_active)
+          hash +=
+            std::hash<types::global_dof_index>()(c.node.dofs[0]) * 2654435761u;
+      }
+    share_flags();
+    n_added            = Utilities::MPI::sum(n_added, comm);
+    n_released         = Utilities::MPI::sum(n_released, comm);
+    hash               = Utilities::MPI::sum(hash, comm);
+    const bool changed = n_added + n_released > 0;
+    // Cycling: an active set seen before in this solve comes back. Then
+    // nodes may still be added but no longer released, which ends the cycle.
+    if (changed && history.count(hash) && !releases_frozen)
+      releases_frozen = true;
+    // A soft body pivoting against a curved obstacle can wander through
+    // many active sets without repeating one: after Free active-set updates the
+    // set only grows, which ends in a converged state; thaw_if_adhesive()
+    // then releases nodes that pull.
+    if (++n_updates >= parameters.free_updates)
+      releases_frozen = true;
+    history.insert(hash);
+    return changed;
+  }
+
+  void
+  ContactProblem::update_held_planes(Candidate      &c,
+                                     const Point<3> &x,
+                                     const Gap      &g)
+  {
+    // An active node takes the exact gradient of the gap as its normal, so
+    // Newton converges quadratically while it stays on one face. A node
+    // that comes back to a face it has left rests in a crease of the
+    // triangulated surface, where the closest face alternates (2- and
+    // 3-cycles; at heavy load most contact nodes of the brain). It then
+    // holds the planes of both faces at once, so it slides along the
+    // crease, and its constraints are linear: quadratic convergence again.
+    // (A smoothed normal fixed for the rest of the solve, used before,
+    // converged linearly, by 0.8 per step.) A held node that goes through a
+    // third face holds that one too (a corner). Held planes that pull on
+    // the node (negative multiplier) are let go by thaw_if_adhesive(), like
+    // pulling nodes: letting them go at once made the planes of a node come
+    // and go in a 2-cycle.
+    const auto same = [](const Tensor<1, 3> &a, const Tensor<1, 3> &b) {
+      return (a - b).norm() <= 1e-6;
+    };
+    const double crease_sine = std::sin(10 * M_PI / 180);
+    const Plane  current{g.gradient, x - g.gap * g.gradient, g.gap};
+    const auto   update_gaps = [&]() {
+      for (Plane &p : c.held)
+        p.gap = p.normal * (x - p.point);
+      if (c.fixed_planes && !c.held.empty())
+        {
+          Plane &mean = c.mean_plane;
+          mean        = Plane();
+          for (const Plane &p : c.held)
+            {
+              mean.normal += p.normal;
+              mean.point += p.point / double(c.held.size());
+            }
+          mean.normal /= mean.normal.norm();
+          mean.gap = mean.normal * (x - mean.point);
+        }
+    };
+    if (c.fixed_planes)
+      {
+        // (Re-planing a node that slid more than h_min / 1000 or h_min / 10
+        // off the surface was tried: more Newton steps on the P1 brain at
+        // gravity x 10, doc/benchmarks.md.)
+        update_gaps();
+        return;
+      }
+    if (c.held.empty())
+      {
+        if (c.face.normal.norm() > 0 && !same(g.gradient, c.face.normal))
+          {
+            const bool back =
+              std::any_of(c.left.begin(), c.left.end(), [&](const Plane &p) {
+                return same(p.normal, g.gradient);
+              });
+            // Faces within 10 degrees of each other (two planes would be
+            // ill-conditioned): one plane with the mean of their normals
+            // through the closest point, fixed for the rest of the solve.
+            // (The mean normal with the distance to the surface as gap,
+            // used before, converged linearly, by about 0.6 per step.)
+            if (back && cross_product_3d(g.gradient, c.face.normal).norm() <
+                          crease_sine)
+              {
+                Tensor<1, 3> normal = g.gradient + c.face.normal;
+                c.held         = {Plane{normal / normal.norm(), current.point}};
+                c.fixed_planes = true;
+              }
+            else if (back)
+              {
+                c.held = {current, c.face};
+                ++c.plane_changes;
+              }
+            else
+              {
+                c.left.push_back(c.face);
+                if (c.left.size() > 4)
+                  c.left.erase(c.left.begin());
+              }
+          }
+      }
+    else if (std::abs(g.gap) > gap_tolerance &&
+             std::none_of(c.held.begin(), c.held.end(), [&](const Plane &p) {
+               return same(p.normal, g.gradient);
+             }))
+      {
+        if (g.gap > 0)
+          // Off the surface, held by planes whose faces it has slid past
+          // (over a ridge): it follows the closest face again.
+          {
+            c.held.clear();
+            ++c.plane_changes;
+          }
+        else
+          {
+            // Through another face: held too, if independent of the held
+            // planes; otherwise it replaces the held plane closest to it.
+            auto closest = c.held.begin();
+            for (auto p = c.held.begin(); p != c.held.end(); ++p)
+              if (p->normal * g.gradient > closest->normal * g.gradient)
+                closest = p;
+            const bool independent =
+              c.held.size() == 1 ?
+                cross_product_3d(closest->normal, g.gradient).norm() >
+                  crease_sine :
+              c.held.size() == 2 ?
+                std::abs(cross_product_3d(c.held[0].normal, c.held[1].normal) *
+                         g.gradient) > crease_sine * crease_sine :
+                false;
+            if (independent)
+              c.held.push_back(current);
+            else
+              *closest = current;
+            ++c.plane_changes;
+          }
+      }
+    // A node whose planes keep changing (held, let go, held again; or two
+    // faces replacing each other: 2-cycles seen with P2 at gravity x 10)
+    // keeps its planes (or the closest face's) for the rest of the solve:
+    // linear constraints that Newton meets exactly. It may then end a
+    // little off the surface (fixed_plane_nodes() says how far). (A mean
+    // normal with the distance to the surface as gap, used before,
+    // converged linearly.)
+    if (c.plane_changes > parameters.plane_changes)
+      {
+        if (c.held.empty())
+          c.held = {current};
+        c.fixed_planes = true;
+      }
+    update_gaps();
+    if (c.held.empty())
+      c.normal = g.gradient;
+    else
+      set_normal_from_held(c);
+  }
+
+  void
+  ContactProblem::set_normal_from_held(Candidate &c)
+  {
+    Tensor<1, 3> sum;
+    for (const Plane &p : c.held)
+      sum += p.normal;
+    c.normal = sum / sum.norm();
+  }
+
+  bool
+  ContactProblem::thaw_if_adhesive(const VectorType &raw_residual)
+  {
+    if (!releases_frozen || n_thaws >= 5)
+      return false;
+    // Each node's own multiplier decides (its contact force, or those of
+    // its held planes), as in update_active_set(); not the recovered
+    // pressure, which at the corners of quadratic faces is the mean of the
+    // neighbours' (pressures()) and could release a corner that pushes.
+    // Nodal contact forces scatter around zero at the rim of a contact
+    // zone (P1 especially): a pull below 0.1 % of the total contact force
+    // is accepted; a larger one releases exactly the pulling nodes and the
+    // pulling planes of crease nodes (the rest of the set stays, releases
+    // stay frozen). A node released before that came back through the
+    // obstacle (grazing) pulls when held and penetrates when free:
+    // releasing it again would only repeat that; it is held and its pull
+    // accepted and reported.
+    double                    push = 0, pull = 0, grazing_pull = 0;
+    unsigned int              n_grazing = 0;
+    std::vector<unsigned int> pulling;
+    std::vector<double>       lambda;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          Candidate &c = candidates[i];
+          if (c.grazing)
+            {
+              const double force = contact_force(c, raw_residual);
+              if (force < 0)
+                {
+                  grazing_pull -= force;
+                  ++n_grazing;
+                }
+              else
+                push += force;
+              continue;
+            }
+          if (c.held.size() > 1)
+            {
+              reaction(c, raw_residual, &lambda);
+              for (unsigned int k = 0; k < lambda.size(); ++k)
+                if (lambda[k] < 0)
+                  {
+                    pull -= lambda[k];
+                    c.dropped |= 1u << k;
+                  }
+                else
+                  push += lambda[k];
+              // Every plane pulls: the node is released.
+              if (c.dropped + 1 == (1u << lambda.size()))
+                {
+                  c.dropped = 0;
+                  pulling.push_back(i);
+                }
+              continue;
+            }
+          const double force = contact_force(c, raw_residual);
+          if (force < 0)
+            {
+              pull -= force;
+              pulling.push_back(i);
+            }
+          else
+            push += force;
+        }
+    const MPI_Comm comm   = communicator();
+    push                  = Utilities::MPI::sum(push, comm);
+    pull                  = Utilities::MPI::sum(pull, comm);
+    n_grazing_pulling     = Utilities::MPI::sum(n_grazing, comm);
+    grazing_pull_fraction = Utilities::MPI::sum(grazing_pull, comm) /
+                            std::max(push, std::numeric_limits<double>::min());
+    if (pull <= 1e-3 * push)
+      {
+        for (Candidate &c : candidates)
+          c.dropped = 0;
+        return false;
+      }
+    for (Candidate &c : candidates)
+      drop_planes(c, c.dropped);
+    for (const unsigned int i : pulling)
+      {
+        candidates[i].active = false;
+        candidates[i].pulled = true;
+      }
+    share_flags();
+    n_released =
+      Utilities::MPI::sum(static_cast<unsigned int>(pulling.size()), comm);
+    n_added = 0;
+    ++n_thaws;
+    return true;
+  }
+
+  double
+  ContactProblem::max_step(const VectorType &delta) const
+  {
+    double alpha = 1;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.eligible && !c.active)
+        {
+          double rate = 0;
+          for (unsigned int k = 0; k < 3; ++k)
+            rate += c.normal[k] * delta[c.node.dofs[k]];
+          if (rate < 0)
+            alpha = std::min(alpha, std::max(c.gap + 0.25 * h_min, 0.) / -rate);
+        }
+    return Utilities::MPI::min(alpha, communicator());
+  }
+
+  void
+  ContactProblem::add_constraints(AffineConstraints<double>       &constraints,
+                                  const AffineConstraints<double> &base) const
+  {
+    // Planes that cannot be imposed (too few free components, or nearly
+    // tangential ones) give way to one plane: for a node on fixed planes
+    // their mean plane (a linear constraint too), else the closest face's
+    // normal with the distance to the surface.
+    for (const Candidate &c : candidates)
+      if (c.active)
+        {
+          c.planes_imposed =
+            !c.held.empty() &&
+            add_plane_constraints(c, c.held, constraints, base);
+          if (c.planes_imposed)
+            continue;
+          const bool mean = c.fixed_planes && !c.held.empty();
+          add_plane_constraints(c,
+                                {mean ? c.mean_plane :
+                                        Plane{c.normal, Point<3>(), c.gap}},
+                                constraints,
+                                base);
+        }
+  }
+
+  bool
+  ContactProblem::add_plane_constraints(
+    const Candidate                 &c,
+    const std::vector<Plane>        &planes,
+    AffineConstraints<double>       &constraints,
+    const AffineConstraints<double> &base) const
+  {
+    // N delta = -g for the m planes (rows n_i), solved for the m free
+    // components S whose block of N is best conditioned (largest |det|):
+    // delta_S = N_S^-1 (-g - N_R delta_R) over the other free components R.
+    const auto               &dofs = c.node.dofs;
+    std::vector<unsigned int> free;
+    for (unsigned int j = 0; j < 3; ++j)
+      if (!c.fixed[j] && !base.is_constrained(dofs[j]))
+        free.push_back(j);
+    const unsigned int m = planes.size();
+    if (m > free.size())
+      return false;
+    std::vector<unsigned int> best, subset;
+    double                    best_det = 0;
+    FullMatrix<double>        block(m, m);
+    // Every m-subset of the free components, by bitmask.
+    for (unsigned int mask = 0; mask < (1u << free.size()); ++mask)
+      {
+        subset.clear();
+        for (unsigned int b = 0; b < free.size(); ++b)
+          if (mask & (1u << b))
+            subset.push_back(free[b]);
+        if (subset.size() != m)
+          continue;
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int q = 0; q < m; ++q)
+            block(i, q) = planes[i].normal[subset[q]];
+        const double det = std::abs(block.determinant());
+        if (det > best_det)
+          {
+            best_det = det;
+            best     = subset;
+          }
+      }
+    // A node that can only move (almost) tangentially to a plane cannot be
+    // pushed back by its free components.
+    if (best_det < (m == 1 ? 0.2 : 0.05))
+      return false;
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int q = 0; q < m; ++q)
+        block(i, q) = planes[i].normal[best[q]];
+    block.gauss_jordan();
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        constraints.add_line(dofs[best[r]]);
+        double inhomogeneity = 0;
+        for (unsigned int q = 0; q < m; ++q)
+          inhomogeneity -= block(r, q) * planes[q].gap;
+        constraints.set_inhomogeneity(dofs[best[r]], inhomogeneity);
+        for (const unsigned int j : free)
+          if (std::find(best.begin(), best.end(), j) == best.end())
+            {
+              double coefficient = 0;
+              for (unsigned int q = 0; q < m; ++q)
+                coefficient -= block(r, q) * planes[q].normal[j];
+              constraints.add_entry(dofs[best[r]], dofs[j], coefficient);
+            }
+      }
+    return true;
+  }
+} // namespace RestShape

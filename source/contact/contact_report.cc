@@ -1,0 +1,301 @@
+// What the contact problem reports: contact conditions, counts, forces,
+// pressures and the nodal fields for output (the active set itself is in
+// contact.cc).
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector.h>
+
+#include <restshape/contact/contact.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  MPI_Comm
+  ContactProblem::communicator() const
+  {
+    return forward.dof_handler().get_triangulation().get_communicator();
+  }
+
+  template <typename Predicate>
+  unsigned int
+  ContactProblem::count_owned(const Predicate &predicate) const
+  {
+    unsigned int n = 0;
+    for (const Candidate &c : candidates)
+      n += (c.owned && predicate(c));
+    return Utilities::MPI::sum(n, communicator());
+  }
+
+  ContactProblem::Violations
+  ContactProblem::violations() const
+  {
+    Violations v;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.eligible)
+        {
+          const double gap = constrained_gap(c);
+          if (gap < -gap_tolerance)
+            ++v.through;
+          else if (c.active && std::abs(gap) > gap_tolerance)
+            ++v.off;
+          else
+            continue;
+          v.worst = std::max(v.worst, std::abs(gap));
+        }
+    const MPI_Comm comm = communicator();
+    v.through           = Utilities::MPI::sum(v.through, comm);
+    v.off               = Utilities::MPI::sum(v.off, comm);
+    v.worst             = Utilities::MPI::max(v.worst, comm);
+    return v;
+  }
+
+  bool
+  ContactProblem::is_satisfied() const
+  {
+    const Violations v = violations();
+    return v.through + v.off == 0;
+  }
+
+  std::string
+  ContactProblem::unsettled_text() const
+  {
+    const Violations v = violations();
+    char             buffer[128];
+    std::snprintf(buffer, sizeof(buffer), "%.2e", v.worst * 1e3);
+    return "the contact conditions do not settle: " +
+           std::to_string(v.through) + " nodes through the obstacle, " +
+           std::to_string(v.off) + " active nodes off it (by up to " + buffer +
+           " mm); the last update made " + std::to_string(n_added) +
+           " nodes active and released " + std::to_string(n_released);
+  }
+
+  std::string
+  ContactProblem::progress_text() const
+  {
+    return ", contact " + std::to_string(n_active()) + " active (+" +
+           std::to_string(n_added) + " -" + std::to_string(n_released) + ")" +
+           (releases_frozen ? " [cycling: releases frozen]" : "");
+  }
+
+  unsigned int
+  ContactProblem::n_active() const
+  {
+    return count_owned([](const Candidate &c) { return c.active; });
+  }
+
+  unsigned int
+  ContactProblem::n_held() const
+  {
+    return count_owned(
+      [](const Candidate &c) { return c.active && c.held.size() > 1; });
+  }
+
+  ContactProblem::Adhesion
+  ContactProblem::adhesion(const VectorType &raw_residual) const
+  {
+    // Pulls within round-off of the total contact force (1e-9 of it) are
+    // not counted.
+    std::vector<double> pulls;
+    double              push = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const double force = contact_force(c, raw_residual);
+          if (force < 0)
+            pulls.push_back(-force);
+          else
+            push += force;
+        }
+    const MPI_Comm comm = communicator();
+    push                = Utilities::MPI::sum(push, comm);
+    unsigned int n      = 0;
+    double       pull   = 0;
+    for (const double f : pulls)
+      if (f > 1e-9 * push)
+        {
+          ++n;
+          pull += f;
+        }
+    pull = Utilities::MPI::sum(pull, comm);
+    return {Utilities::MPI::sum(n, comm), pull, push > 0 ? pull / push : 0.};
+  }
+
+  std::pair<unsigned int, double>
+  ContactProblem::fixed_plane_nodes() const
+  {
+    unsigned int n        = 0;
+    double       distance = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active && c.fixed_planes)
+        {
+          ++n;
+          distance = std::max(distance, std::abs(c.gap));
+        }
+    const MPI_Comm comm = communicator();
+    return {Utilities::MPI::sum(n, comm), Utilities::MPI::max(distance, comm)};
+  }
+
+  unsigned int
+  ContactProblem::n_candidates() const
+  {
+    return count_owned([](const Candidate &) { return true; });
+  }
+
+  unsigned int
+  ContactProblem::n_outside() const
+  {
+    return count_owned(
+      [this](const Candidate &c) { return c.gap < -gap_tolerance; });
+  }
+
+  Tensor<1, 3>
+  ContactProblem::total_force(const VectorType &raw_residual) const
+  {
+    Tensor<1, 3> force;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        force += reaction(c, raw_residual);
+    const MPI_Comm comm = communicator();
+    for (unsigned int k = 0; k < 3; ++k)
+      force[k] = Utilities::MPI::sum(force[k], comm);
+    return force;
+  }
+
+  double
+  ContactProblem::max_penetration(const bool eligible_only) const
+  {
+    double p = -std::numeric_limits<double>::max();
+    for (const Candidate &c : candidates)
+      if (c.owned && (c.eligible || !eligible_only))
+        p = std::max(p, -c.gap);
+    return Utilities::MPI::max(p, communicator()) + 0.;
+  }
+
+  std::vector<double>
+  ContactProblem::pressures(const VectorType &raw_residual) const
+  {
+    // The pressure of an active node is its contact force over int phi dA
+    // on the faces that face the obstacle (outward normal against the
+    // obstacle's normal at the node: n_f . n < -1/2), which makes a uniform
+    // pressure exact and leaves out faces at an angle to the obstacle (the
+    // sides of a block on a floor). Where int phi dA vanishes (corners of
+    // quadratic triangles carry no force under a smooth pressure) the
+    // pressure is the mean of the other nodes of those faces; an active node
+    // without such a face uses its lumped area.
+    const unsigned int  n = candidates.size();
+    std::vector<double> lumped(n, 0.), integral(n, 0.), pressure(n, 0.);
+    std::vector<bool>   in_face(n, false);
+    for (const Face &face : faces)
+      for (unsigned int k = 0; k < face.nodes.size(); ++k)
+        {
+          const Candidate &c = candidates[face.nodes[k]];
+          if (!c.active || face.normal * c.normal > -0.5)
+            continue;
+          lumped[face.nodes[k]] += face.lumped[k];
+          integral[face.nodes[k]] += face.integral[k];
+          in_face[face.nodes[k]] = true;
+        }
+    const auto direct = [&](const unsigned int i) {
+      return in_face[i] && integral[i] >= 0.1 * lumped[i];
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          const double force = contact_force(candidates[i], raw_residual);
+          if (direct(i))
+            pressure[i] = force / integral[i];
+          else if (!in_face[i])
+            pressure[i] = force / candidates[i].area_lumped;
+        }
+    std::vector<double>       sum(n, 0.);
+    std::vector<unsigned int> count(n, 0);
+    for (const Face &face : faces)
+      for (const unsigned int i : face.nodes)
+        if (in_face[i] && !direct(i) &&
+            face.normal * candidates[i].normal <= -0.5)
+          for (const unsigned int j : face.nodes)
+            if (direct(j))
+              {
+                sum[i] += pressure[j];
+                ++count[i];
+              }
+    for (unsigned int i = 0; i < n; ++i)
+      if (candidates[i].owned && candidates[i].active && count[i] > 0)
+        pressure[i] = sum[i] / count[i];
+    return pressure;
+  }
+
+  std::pair<double, double>
+  ContactProblem::pressure_range(const VectorType &raw_residual) const
+  {
+    const std::vector<double> pressure = pressures(raw_residual);
+    double low = std::numeric_limits<double>::max(), high = -low;
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned && candidates[i].active)
+        {
+          low  = std::min(low, pressure[i]);
+          high = std::max(high, pressure[i]);
+        }
+    const MPI_Comm comm = communicator();
+    low                 = Utilities::MPI::min(low, comm);
+    high                = Utilities::MPI::max(high, comm);
+    return high < low ? std::make_pair(0., 0.) : std::make_pair(low, high);
+  }
+
+  double
+  ContactProblem::contact_radius(const Point<3>     &point,
+                                 const Tensor<1, 3> &direction) const
+  {
+    const Tensor<1, 3> axis   = direction / direction.norm();
+    double             radius = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const Tensor<1, 3> r = c.node.position - point;
+          radius = std::max(radius, (r - (r * axis) * axis).norm());
+        }
+    return Utilities::MPI::max(radius, communicator());
+  }
+
+  double
+  ContactProblem::patch_radius(const Tensor<1, 3> &direction) const
+  {
+    const MPI_Comm comm = communicator();
+    Tensor<1, 3>   sum;
+    double         n = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          sum += c.node.position;
+          n += 1;
+        }
+    sum = Utilities::MPI::sum(sum, comm);
+    n   = Utilities::MPI::sum(n, comm);
+    if (n == 0 || direction.norm() == 0)
+      return 0;
+    return contact_radius(Point<3>(sum / n), direction);
+  }
+
+  VectorType
+  ContactProblem::nodal_fields(const VectorType &raw_residual,
+                               const double      length_scale) const
+  {
+    const std::vector<double> pressure = pressures(raw_residual);
+    VectorType                fields   = forward.zero_vector();
+    for (unsigned int i = 0; i < candidates.size(); ++i)
+      if (candidates[i].owned)
+        {
+          const auto &dofs = candidates[i].node.dofs;
+          fields[dofs[0]]  = candidates[i].active ? 1 : 0;
+          fields[dofs[1]]  = candidates[i].gap * length_scale;
+          fields[dofs[2]]  = pressure[i];
+        }
+    fields.compress(VectorOperation::insert);
+    return fields;
+  }
+} // namespace RestShape

@@ -1,0 +1,338 @@
+// ForwardProblem: assembly of the co-rotational residual and tangent
+// (WorkStream over the locally owned cells).
+
+#include <deal.II/base/work_stream.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
+
+#include <restshape/contact/contact.h>
+#include <restshape/forward/forward_problem.h>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  // ------------------------------------------------------------------
+  // Per-thread scratch and per-cell results of the assembly.
+
+  struct ForwardProblem::ScratchData
+  {
+    ScratchData(const Mapping<3>       &mapping,
+                const FiniteElement<3> &fe,
+                const Quadrature<3>    &quadrature,
+                const Quadrature<2>    &face_quadrature)
+      : fe_values(mapping,
+                  fe,
+                  quadrature,
+                  update_values | update_gradients | update_JxW_values)
+      , fe_face_values(mapping,
+                       fe,
+                       face_quadrature,
+                       update_values | update_normal_vectors |
+                         update_JxW_values)
+      , grad_d(quadrature.size())
+      , grad_w(quadrature.size())
+      , face_d(face_quadrature.size())
+      , face_w(face_quadrature.size())
+      , b(fe.n_dofs_per_cell())
+      , v(fe.n_dofs_per_cell())
+    {}
+
+    ScratchData(const ScratchData &other)
+      : ScratchData(other.fe_values.get_mapping(),
+                    other.fe_values.get_fe(),
+                    other.fe_values.get_quadrature(),
+                    other.fe_face_values.get_quadrature())
+    {}
+
+    FEValues<3>               fe_values;
+    FEFaceValues<3>           fe_face_values;
+    std::vector<Tensor2>      grad_d, grad_w;
+    std::vector<Tensor<1, 3>> face_d, face_w;
+    std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
+    std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
+  };
+
+  struct ForwardProblem::CopyData
+  {
+    CopyData(const unsigned int n)
+      : cell_matrix(n, n)
+      , cell_rhs(n)
+      , cell_external(n)
+      , dofs(n)
+    {}
+
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;      // f_ext - f_int
+    Vector<double>                       cell_external; // f_ext
+    std::vector<types::global_dof_index> dofs;
+    bool                                 valid = true;
+    Point<3>                             center; // of an inverted cell
+    types::material_id                   label = 0;
+    double energy                              = 0; // int W dV_rest - f_ext . d
+  };
+
+  // ------------------------------------------------------------------
+  // Assembly
+
+  void
+  ForwardProblem::local_assemble(
+    const typename DoFHandler<3>::active_cell_iterator &cell,
+    ScratchData                                        &scratch,
+    CopyData                                           &copy,
+    const Assemble                                      what) const
+  {
+    const unsigned int n_dofs    = fe_.n_dofs_per_cell();
+    const bool         matrix    = (what == Assemble::residual_and_matrix);
+    FEValues<3>       &fe_values = scratch.fe_values;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(copy.dofs);
+    copy.cell_rhs      = 0;
+    copy.cell_external = 0;
+    if (matrix)
+      copy.cell_matrix = 0;
+    copy.valid = true;
+
+    const FEValuesExtractors::Vector u(0);
+    fe_values[u].get_function_gradients(d_buffer, scratch.grad_d);
+    fe_values[u].get_function_gradients(w_buffer, scratch.grad_w);
+
+    const Label            label = cell->material_id();
+    const CorotationalLaw &law   = material_table.law(label);
+    // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
+    // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
+    const Tensor<1, 3> body_force =
+      (material_table.density(label) - parameters.loads.fluid_density) *
+      current_load.acceleration;
+    const Tensor2 I = unit_symmetric_tensor<3>();
+
+    Tensor2 P;
+    Tensor4 A;
+    double  W   = 0;
+    copy.energy = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        // Rest configuration X_rest = X + w: dX_rest = G dX.
+        const Tensor2 G     = I + scratch.grad_w[q];
+        const double  det_G = determinant(G);
+        const Tensor2 G_inv = invert(G);
+        const Tensor2 F     = (I + scratch.grad_d[q]) * G_inv;
+        if (!(det_G > 0) ||
+            !law.evaluate(F, P, matrix ? &A : nullptr, tangent_type, &W))
+          {
+            copy.valid  = false;
+            copy.center = cell->center();
+            copy.label  = label;
+            return;
+          }
+        const double JxW     = fe_values.JxW(q);
+        const double dV_rest = det_G * JxW;
+        copy.energy += W * dV_rest;
+        const Tensor2 G_inv_T = transpose(G_inv);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const unsigned int ci = fe_.system_to_component_index(i).first;
+            scratch.b[i]          = G_inv_T * fe_values.shape_grad(i, q);
+            const double f_ext =
+              fe_values.shape_value(i, q) * body_force[ci] * JxW;
+            copy.cell_external(i) += f_ext;
+            copy.cell_rhs(i) += f_ext - (P[ci] * scratch.b[i]) * dV_rest;
+          }
+        if (!matrix)
+          continue;
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            const unsigned int cj = fe_.system_to_component_index(j).first;
+            Tensor2           &v  = scratch.v[j];
+            for (unsigned int c = 0; c < 3; ++c)
+              for (unsigned int K = 0; K < 3; ++K)
+                {
+                  double sum = 0;
+                  for (unsigned int L = 0; L < 3; ++L)
+                    sum += A[c][K][cj][L] * scratch.b[j][L];
+                  v[c][K] = sum * dV_rest;
+                }
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const unsigned int ci = fe_.system_to_component_index(i).first;
+            for (unsigned int j = 0; j <= i; ++j)
+              copy.cell_matrix(i, j) += scratch.v[j][ci] * scratch.b[i];
+          }
+      }
+    if (matrix)
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = i + 1; j < n_dofs; ++j)
+          copy.cell_matrix(i, j) = copy.cell_matrix(j, i);
+
+    // CSF pressure: a dead load -p n on the outer faces of the mesh.
+    if (current_load.pressure != 0 && pressure_labels.count(label))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            FEFaceValues<3> &fv = scratch.fe_face_values;
+            fv.reinit(cell, f);
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                const Tensor<1, 3> traction =
+                  -current_load.pressure * fv.normal_vector(q);
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    const double f_ext =
+                      fv.shape_value(i, q) *
+                      traction[fe_.system_to_component_index(i).first] *
+                      fv.JxW(q);
+                    copy.cell_external(i) += f_ext;
+                    copy.cell_rhs(i) += f_ext;
+                  }
+              }
+          }
+
+    // Elastic support: traction -k (d - w) on the outer faces (mesh
+    // geometry), energy k/2 |d - w|^2.
+    const double k = parameters.boundary.support_stiffness;
+    if (k > 0 && support_labels.count(label))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            FEFaceValues<3> &fv = scratch.fe_face_values;
+            fv.reinit(cell, f);
+            fv[u].get_function_values(d_buffer, scratch.face_d);
+            fv[u].get_function_values(w_buffer, scratch.face_w);
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                const Tensor<1, 3> u_rest =
+                  scratch.face_d[q] - scratch.face_w[q];
+                const double JxW = fv.JxW(q);
+                copy.energy += 0.5 * k * u_rest.norm_square() * JxW;
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    const unsigned int ci =
+                      fe_.system_to_component_index(i).first;
+                    const double phi = fv.shape_value(i, q);
+                    copy.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
+                    if (matrix)
+                      for (unsigned int j = 0; j < n_dofs; ++j)
+                        if (fe_.system_to_component_index(j).first == ci)
+                          copy.cell_matrix(i, j) +=
+                            k * phi * fv.shape_value(j, q) * JxW;
+                  }
+              }
+          }
+
+    // Dead loads: their potential is -f_ext . (d - w), the work done from
+    // the rest shape (f_ext does not depend on d or w).
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      copy.energy -= copy.cell_external(i) *
+                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
+  }
+
+  bool
+  ForwardProblem::assemble(const Assemble what)
+  {
+    TimerOutput::Scope scope(timer, "Assembly");
+    const bool         matrix = (what == Assemble::residual_and_matrix);
+    // The cell vectors go into deal.II's distributed vectors, whose element
+    // access is an index shift: Trilinos's costs a map look-up and state
+    // checks per entry, which made the vector additions as costly as the
+    // matrix ones (profile of the brain forward solve).
+    for (const auto &[v, buffer] :
+         {std::pair(&d, &d_buffer), std::pair(&w, &w_buffer)})
+      {
+        std::copy(v->begin(), v->end(), buffer->begin());
+        buffer->update_ghost_values();
+      }
+    raw_buffer       = 0;
+    condensed_buffer = 0;
+    external_buffer  = 0;
+    if (matrix)
+      {
+        tangent    = 0;
+        rhs_buffer = 0;
+      }
+    bool          all_valid = true;
+    double        energy    = 0;
+    InvertedCells inverted;
+
+    using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
+    WorkStream::run(
+      CellFilter(IteratorFilters::LocallyOwnedCell(),
+                 dof_handler_.begin_active()),
+      CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler_.end()),
+      [this, what](const CellFilter &cell, ScratchData &s, CopyData &c) {
+        local_assemble(cell, s, c, what);
+      },
+      [this, matrix, &all_valid, &energy, &inverted](const CopyData &c) {
+        if (!c.valid)
+          {
+            if (all_valid)
+              {
+                inverted.center = c.center;
+                inverted.label  = c.label;
+              }
+            ++inverted.count;
+            all_valid = false;
+            return;
+          }
+        energy += c.energy;
+        constraints_hanging.distribute_local_to_global(c.cell_rhs,
+                                                       c.dofs,
+                                                       raw_buffer);
+        constraints_base.distribute_local_to_global(c.cell_external,
+                                                    c.dofs,
+                                                    external_buffer);
+        constraints_newton.distribute_local_to_global(c.cell_rhs,
+                                                      c.dofs,
+                                                      condensed_buffer);
+        if (matrix)
+          constraints_newton.distribute_local_to_global(
+            c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_buffer);
+      },
+      ScratchData(*mapping_, fe_, cell_quadrature, face_quadrature_),
+      CopyData(fe_.n_dofs_per_cell()),
+      2 * MultithreadInfo::n_threads(),
+      64);
+
+    const auto finish = [](BufferType &buffer, VectorType &v) {
+      buffer.compress(VectorOperation::add);
+      std::copy(buffer.begin(), buffer.end(), v.begin());
+    };
+    finish(raw_buffer, residual_raw);
+    finish(condensed_buffer, residual_condensed);
+    finish(external_buffer, external_condensed);
+    if (matrix)
+      {
+        tangent.compress(VectorOperation::add);
+        finish(rhs_buffer, rhs_newton);
+      }
+    total_energy = Utilities::MPI::sum(energy, comm);
+    if (Utilities::MPI::min(all_valid ? 1 : 0, comm) == 1)
+      return true;
+    // One inverted cell to name: that of the lowest rank that has one.
+    const std::vector<double> mine = {double(inverted.count),
+                                      inverted.center[0],
+                                      inverted.center[1],
+                                      inverted.center[2],
+                                      double(inverted.label)};
+    inverted_cells.count           = 0;
+    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+      {
+        if (r[0] > 0 && inverted_cells.count == 0)
+          {
+            inverted_cells.center = Point<3>(r[1], r[2], r[3]);
+            inverted_cells.label  = types::material_id(r[4]);
+          }
+        inverted_cells.count += static_cast<unsigned int>(r[0]);
+      }
+    return false;
+  }
+
+  bool
+  ForwardProblem::evaluate(const bool with_tangent)
+  {
+    make_newton_constraints();
+    return assemble(with_tangent ? Assemble::residual_and_matrix :
+                                   Assemble::residual);
+  }
+
+} // namespace RestShape

@@ -1,0 +1,272 @@
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+#include <dlfcn.h>
+#include <restshape/base/input_error.h>
+#include <restshape/forward/linear_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  unsigned int
+  match_blas_threads_to_deal_ii()
+  {
+    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr)
+      return 0;
+    // Looked up at run time: OpenBLAS comes in through deal.II's and
+    // MUMPS's dependencies (Debian's BLAS alternative), not our link line.
+    using SetThreads = void (*)(int);
+    const auto set   = reinterpret_cast<SetThreads>(
+      dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (set == nullptr)
+      return 0;
+    const unsigned int n = MultithreadInfo::n_threads();
+    set(static_cast<int>(n));
+    return n;
+  }
+
+  LinearSolver::LinearSolver(const SolverParameters &parameters,
+                             const unsigned int      degree,
+                             TimerOutput            *timer)
+    : parameters(parameters)
+    , degree(degree)
+    , timer(timer)
+  {}
+
+  LinearSolver::~LinearSolver() = default;
+
+  void
+  LinearSolver::set_rigid_body_modes(std::vector<std::vector<double>> modes)
+  {
+    rigid_body_modes = std::move(modes);
+  }
+
+  unsigned int
+  LinearSolver::solve(const MatrixType &A,
+                      VectorType       &x,
+                      const VectorType &b,
+                      const double      relative_tolerance)
+  {
+    if (parameters.linear_solver == LinearSolverType::cg_amg)
+      return solve_iteratively(A,
+                               x,
+                               b,
+                               relative_tolerance > 0 ?
+                                 relative_tolerance :
+                                 parameters.linear_tolerance);
+
+    solve_directly(A, x, b);
+    for (const double v : x)
+      if (!std::isfinite(v))
+        throw SolverFailure("the direct solver (MUMPS) returned NaN: the "
+                            "matrix is singular (check that the scene fixes "
+                            "every rigid-body motion)");
+    last_method = "MUMPS";
+    return 1;
+  }
+
+  void
+  LinearSolver::solve_directly(const MatrixType &A,
+                               VectorType       &x,
+                               const VectorType &b)
+  {
+    Epetra_CrsMatrix &matrix =
+      const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+    if (factored_matrix != &matrix)
+      {
+        // New matrix object (new mesh): new symbolic factorisation.
+        direct_solver.reset();
+        direct_problem = std::make_unique<Epetra_LinearProblem>();
+        direct_problem->SetOperator(&matrix);
+        Amesos factory;
+        direct_solver.reset(factory.Create("Amesos_Mumps", *direct_problem));
+        AssertThrow(direct_solver != nullptr,
+                    ExcMessage("MUMPS is not available in Amesos"));
+        Teuchos::ParameterList list;
+        // The tangent is symmetric (possibly indefinite): LDL^T.
+        list.set("MatrixProperty", "symmetric");
+        direct_solver->SetParameters(list);
+        auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get());
+        mumps->SetICNTL(7, 5);   // METIS ordering
+        mumps->SetICNTL(14, 50); // 50 % workspace margin
+        if (direct_solver->SymbolicFactorization() != 0)
+          throw SolverFailure("MUMPS: symbolic factorisation failed");
+        factored_matrix = &matrix;
+      }
+    direct_problem->SetLHS(&x.trilinos_vector());
+    direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+    const int status = direct_solver->NumericFactorization();
+    if (status != 0)
+      throw SolverFailure("the direct solver (MUMPS) could not factorise the "
+                          "matrix with " +
+                          std::to_string(A.m()) + " unknowns (error " +
+                          std::to_string(status) +
+                          "): singular matrix? check that the scene fixes "
+                          "every rigid-body motion");
+    direct_solver->Solve();
+  }
+
+  bool
+  LinearSolver::setup_amg(const MatrixType &A, const bool force_rebuild)
+  {
+    std::unique_ptr<TimerOutput::Scope> scope;
+    if (timer != nullptr)
+      scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
+    const bool same_matrix =
+      amg != nullptr && amg_matrix == &A.trilinos_matrix();
+    if (same_matrix && !force_rebuild)
+      switch (parameters.amg_update)
+        {
+          case AmgUpdate::reuse_aggregates:
+            // Same sparsity pattern, new values: keep the aggregates.
+            amg->reinit();
+            return true;
+          case AmgUpdate::lagged:
+            if (!amg_stale)
+              return false;
+            break;
+          case AmgUpdate::rebuild:
+            break;
+        }
+
+    amg.reset(); // before its null space goes
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = (degree > 1);
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = parameters.amg_aggregation_threshold;
+
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(list, unused, A.trilinos_matrix());
+
+    const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+    null_space =
+      std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
+    for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
+      for (int i = 0; i < map.NumMyElements(); ++i)
+        (*null_space)[m][i] = rigid_body_modes[m][i];
+    if (!rigid_body_modes.empty())
+      {
+        list.set("null space: type", "pre-computed");
+        list.set("null space: dimension", null_space->NumVectors());
+        list.set("null space: vectors", null_space->Values());
+      }
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(A.trilinos_matrix(), list);
+    amg_matrix = &A.trilinos_matrix();
+    amg_stale  = false;
+    return true;
+  }
+
+  namespace
+  {
+    /// CG iterations per decade of residual reduction of a finished solve
+    /// (0 if it reduced the residual too little to tell).
+    double
+    iterations_per_decade(const SolverControl &control, const VectorType &b)
+    {
+      const double decades =
+        std::log10(b.l2_norm() / std::max(control.last_value(), 1e-300));
+      return decades > 0.3 ? control.last_step() / decades : 0.;
+    }
+  } // namespace
+
+  unsigned int
+  LinearSolver::solve_iteratively(const MatrixType &A,
+                                  VectorType       &x,
+                                  const VectorType &b,
+                                  const double      relative_tolerance)
+  {
+    const double target = relative_tolerance * b.l2_norm();
+    if (setup_amg(A, false))
+      return run_krylov(A, x, b, target);
+
+    // Lagged AMG (an earlier step's): CG with it. If CG has slowed down
+    // by more than 1.5 times, the next solve rebuilds; if CG fails, this
+    // one rebuilds and solves again.
+    SolverControl control(2000, target);
+    if (run_cg(A, x, b, control))
+      {
+        const double now = iterations_per_decade(control, b);
+        if (amg_iterations_per_decade == 0)
+          amg_iterations_per_decade = now;
+        else if (now > 1.5 * amg_iterations_per_decade)
+          amg_stale = true;
+        return control.last_step();
+      }
+    setup_amg(A, true);
+    return control.last_step() + run_krylov(A, x, b, target);
+  }
+
+  bool
+  LinearSolver::run_cg(const MatrixType &A,
+                       VectorType       &x,
+                       const VectorType &b,
+                       SolverControl    &control)
+  {
+    try
+      {
+        SolverCG<VectorType> cg(control);
+        cg.solve(A, x, b, *amg);
+        last_method = "CG+AMG";
+        return true;
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        x = 0;
+        return false;
+      }
+  }
+
+  unsigned int
+  LinearSolver::run_krylov(const MatrixType &A,
+                           VectorType       &x,
+                           const VectorType &b,
+                           const double      target)
+  {
+    SolverControl control(2000, target);
+    if (run_cg(A, x, b, control))
+      {
+        // The standard a lagged AMG is held to.
+        amg_iterations_per_decade = iterations_per_decade(control, b);
+        return control.last_step();
+      }
+    // The consistent co-rotational tangent can be indefinite at large
+    // strains: GMRES does not need definiteness.
+    SolverControl gmres_control(5000, target);
+    try
+      {
+        SolverGMRES<VectorType> gmres(
+          gmres_control, SolverGMRES<VectorType>::AdditionalData(200));
+        gmres.solve(A, x, b, *amg);
+      }
+    catch (const SolverControl::NoConvergence &exc)
+      {
+        throw SolverFailure(
+          "the iterative solver did not converge: CG stopped after " +
+          std::to_string(control.last_step()) + " and GMRES after " +
+          std::to_string(exc.last_step) + " iterations with residual " +
+          std::to_string(exc.last_residual) + " (target " +
+          std::to_string(target) + "); try Linear solver = direct");
+      }
+    last_method = "GMRES+AMG";
+    return control.last_step() + gmres_control.last_step();
+  }
+} // namespace RestShape

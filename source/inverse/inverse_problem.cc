@@ -1,0 +1,379 @@
+#include <restshape/inverse/inverse_problem.h>
+
+#include <cstdio>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    mm(const double metres)
+    {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * 1e3);
+      return buffer;
+    }
+
+    /**
+     * When the inverse iteration stops unconverged: divergence, stagnation,
+     * and runs of partial updates that gain nothing (their forward solves
+     * keep stopping short, typically where a cell would invert). Fed the
+     * error of every accepted iterate.
+     */
+    class StoppingRules
+    {
+    public:
+      StoppingRules(const double initial, const double tolerance)
+        : initial(initial)
+        , tolerance(tolerance)
+        , previous(initial)
+        , best(initial)
+      {}
+
+      /// The reason to stop after accepted iteration @p iteration with
+      /// error @p error, or "" to go on. @p partial: the update was taken
+      /// only up to @p fraction of it, the forward solve having stopped
+      /// for @p failure.
+      std::string
+      check(const unsigned int iteration,
+            const double       error,
+            const bool         partial,
+            const double       fraction,
+            const std::string &failure)
+      {
+        const std::string at = std::to_string(iteration);
+        increases            = (error > previous) ? increases + 1 : 0;
+        previous             = error;
+        if (error > 2 * initial)
+          return "diverged: the error grew from " + mm(initial) + " to " +
+                 mm(error) + " in " + at + " iterations";
+        if (increases >= 3)
+          return "diverged: the error grew in 3 iterations in a row, from "
+                 "its best " +
+                 mm(std::min(best, error)) + " to " + mm(error) +
+                 " at iteration " + at;
+        if (error < 0.99 * best)
+          {
+            best       = error;
+            since_best = 0;
+            fractions.clear();
+            return "";
+          }
+        ++since_best;
+        if (!partial)
+          fractions.clear();
+        else
+          {
+            fractions.push_back(fraction);
+            if (fractions.size() >= max_partial)
+              {
+                std::string list;
+                for (const double f : fractions)
+                  {
+                    char buffer[32];
+                    std::snprintf(buffer, sizeof(buffer), "%.3g", f);
+                    list += (list.empty() ? "" : ", ") + std::string(buffer);
+                  }
+                return "stalled: the forward solves of the last " +
+                       std::to_string(max_partial) +
+                       " updates reached equilibrium only part of the way (" +
+                       list +
+                       " of each) and the error did not improve on "
+                       "its best " +
+                       mm(best) + " (now " + mm(error) + ", iteration " + at +
+                       "); the last one stopped because " + failure;
+              }
+          }
+        if (since_best >= 10)
+          return "stagnated: the error has not improved by 1 % in 10 "
+                 "iterations (best " +
+                 mm(best) + ", tolerance " + mm(tolerance) + ")";
+        return "";
+      }
+
+      /// The error of the last accepted iterate (the initial one before any).
+      double
+      last() const
+      {
+        return previous;
+      }
+
+    private:
+      static constexpr unsigned int max_partial = 3;
+      const double                  initial, tolerance;
+      double                        previous, best;
+      unsigned int                  since_best = 0, increases = 0;
+      std::vector<double>           fractions; // partial run without gain
+    };
+  } // namespace
+
+  InverseProblem::InverseProblem(const InverseParameters &parameters,
+                                 ForwardProblem          &forward,
+                                 ContactProblem          *contact,
+                                 OutputWriter            *output,
+                                 TimerOutput             &timer,
+                                 ConditionalOStream      &pcout,
+                                 const Timer             &wall_timer)
+    : parameters(parameters)
+    , forward(forward)
+    , contact(contact)
+    , output(output)
+    , timer(timer)
+    , pcout(pcout)
+    , wall_timer(wall_timer)
+  {}
+
+  double
+  InverseProblem::measure(const std::pair<double, double> &errors) const
+  {
+    return parameters.measure == InverseParameters::Measure::mean ?
+             errors.first :
+             errors.second;
+  }
+
+  const std::vector<InverseIterationRecord> &
+  InverseProblem::records() const
+  {
+    return history;
+  }
+
+  void
+  InverseProblem::record(const unsigned int     iteration,
+                         const SolveStatistics &stats,
+                         const bool             anderson)
+  {
+    const auto errors = forward.nodal_norms(forward.displacement());
+    history.push_back({iteration,
+                       errors.first,
+                       errors.second,
+                       stats.newton_iterations,
+                       contact != nullptr ? contact->n_active() : 0,
+                       wall_timer.wall_time(),
+                       anderson});
+    std::string contact_text;
+    if (contact != nullptr)
+      {
+        contact_text = ", " +
+                       std::to_string(history.back().active_contact_nodes) +
+                       " contact nodes";
+        const auto [n_fixed, distance] = contact->fixed_plane_nodes();
+        if (n_fixed > 0)
+          contact_text += ", " + std::to_string(n_fixed) +
+                          " on fixed planes, up to " + mm(distance) +
+                          " off the obstacle";
+      }
+    pcout << "Inverse iteration " << iteration << ": mean error "
+          << mm(errors.first) << ", max " << mm(errors.second) << " ("
+          << stats.newton_iterations << " Newton iterations"
+          << (anderson ? ", Anderson step" : "") << contact_text << ")"
+          << std::endl;
+  }
+
+  void
+  InverseProblem::write_output(const unsigned int step,
+                               const unsigned int iteration)
+  {
+    if (output == nullptr)
+      return;
+    TimerOutput::Scope scope(timer, "Output");
+    // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
+    VectorType error = forward.zero_vector(), target = forward.zero_vector();
+    error -= forward.owned_copy(forward.displacement());
+    for (const Node &node : forward.owned_nodes())
+      for (unsigned int c = 0; c < 3; ++c)
+        target[node.dofs[c]] = node.position[c];
+    target.compress(VectorOperation::insert);
+    VectorType rest = target, equilibrium = target;
+    rest += forward.owned_copy(forward.rest_displacement());
+    equilibrium += forward.owned_copy(forward.displacement());
+
+    const std::string       unit   = output->length_unit_name;
+    const double            scale  = output->length_scale();
+    std::vector<NodalField> fields = {
+      {&error, {"error_" + unit}, scale, "error_magnitude_" + unit},
+      {&target, {"target_position_" + unit}, scale, ""},
+      {&rest, {"rest_position_" + unit}, scale, ""},
+      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""}};
+    VectorType contact_fields;
+    if (contact != nullptr)
+      {
+        contact_fields = contact->nodal_fields(forward.raw_residual(), scale);
+        fields.push_back(
+          {&contact_fields,
+           {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
+           1.,
+           ""});
+      }
+    output->write_fields(forward, step, iteration, fields);
+  }
+
+  InverseResult
+  InverseProblem::run(const VectorType  &initial_rest,
+                      const unsigned int first_step,
+                      const VectorType  *guess)
+  {
+    InverseResult result;
+    history.clear();
+    const LoadState load   = forward.scene_load();
+    const auto      finish = [&](const std::string &reason) {
+      result.reason     = reason;
+      const auto e      = forward.nodal_norms(forward.displacement());
+      result.mean_error = e.first;
+      result.max_error  = e.second;
+      if (!reason.empty())
+        pcout << "Inverse iteration stopped: " << reason << std::endl;
+      return result;
+    };
+
+    // Iteration 0: the forward problem from the initial rest shape (the
+    // target itself unless a rest shape was given), loaded from zero or
+    // started from the guess.
+    SolveStatistics stats = forward.solve_from(guess, load, initial_rest);
+    ++result.forward_solves;
+    result.newton_iterations += stats.newton_iterations;
+    if (!stats.converged)
+      return finish(
+        "the forward solve from the initial rest shape did not converge: " +
+        stats.failure);
+    record(0, stats, false);
+    write_output(first_step, 0);
+
+    const double initial = measure(forward.nodal_norms(forward.displacement()));
+    StoppingRules stopping(initial, parameters.tolerance);
+    if (initial <= parameters.tolerance)
+      {
+        result.converged = true;
+        return finish("");
+      }
+
+    const bool accelerate =
+      parameters.acceleration == InverseParameters::Acceleration::anderson;
+    AndersonAccelerator anderson(parameters.anderson_depth);
+    VectorType          w = initial_rest, d = forward.zero_vector();
+    d                = forward.displacement();
+    bool force_plain = false;
+
+    while (result.iterations < parameters.max_iterations)
+      {
+        // The fixed point: e = X_target - X_eq = -d; plain update w + e.
+        VectorType f = forward.zero_vector();
+        f -= d;
+        VectorType plain = w;
+        plain += f;
+        VectorType candidate   = plain;
+        bool       accelerated = false;
+        if (accelerate)
+          {
+            if (force_plain)
+              anderson.reset();
+            candidate   = anderson.next(w, f);
+            accelerated = anderson.columns_used() > 0;
+          }
+        force_plain = false;
+
+        // Never a rest shape with an inverted or degenerate cell.
+        unsigned int n_bad = 0;
+        if (!forward.rest_shape_is_valid(candidate, n_bad))
+          {
+            if (accelerated)
+              {
+                pcout << "  Anderson step would invert " << n_bad
+                      << " cells: plain update" << std::endl;
+                anderson.reset();
+                anderson.next(w, f);
+                candidate   = plain;
+                accelerated = false;
+              }
+            for (double beta = 0.5;
+                 !forward.rest_shape_is_valid(candidate, n_bad);
+                 beta /= 2)
+              {
+                if (beta < 1. / 64)
+                  return finish(
+                    "every rest-shape update, even shortened 64 times, would "
+                    "invert " +
+                    std::to_string(n_bad) + " cells (iteration " +
+                    std::to_string(result.iterations + 1) + ", error " +
+                    mm(stopping.last()) + ")");
+                candidate = w;
+                candidate.add(beta, f);
+                pcout << "  The update would invert " << n_bad
+                      << " cells: shortened to " << beta << std::endl;
+              }
+          }
+
+        // Forward solve from the last equilibrium, the rest shape moving
+        // from w to the candidate.
+        const auto contact_state =
+          contact != nullptr ? contact->state() : ContactProblem::State();
+        stats = forward.solve(load, candidate);
+        ++result.forward_solves;
+        result.newton_iterations += stats.newton_iterations;
+        const auto   errors = forward.nodal_norms(forward.displacement());
+        const double error  = measure(errors);
+        // A plain update whose forward solve failed: the forward solve has
+        // already tried ever smaller fractions of it (its load-step
+        // halvings), so shortening it here would only repeat that work.
+        // Either it reached equilibrium part of the way, and that shorter
+        // update is the new iterate, or the iteration stops at once.
+        bool partial = false;
+        if (!stats.converged && !accelerated)
+          {
+            if (!(stats.fraction > 0))
+              return finish("the forward solve of iteration " +
+                            std::to_string(result.iterations + 1) +
+                            " did not converge even for the smallest "
+                            "fraction of the update: " +
+                            stats.failure);
+            pcout << "  The forward solve reached equilibrium at "
+                  << stats.fraction
+                  << " of the update: that shorter update is taken"
+                  << std::endl;
+            VectorType update = candidate;
+            update -= w;
+            candidate = w;
+            candidate.add(stats.fraction, update);
+            partial     = true;
+            force_plain = true;
+          }
+        else if (!stats.converged || (accelerated && error > stopping.last()))
+          {
+            // Back to the last iterate; the plain update follows.
+            forward.set_state(d, w, load);
+            if (contact != nullptr)
+              contact->set_state(contact_state);
+            pcout << "  Anderson step rejected ("
+                  << (stats.converged ?
+                        "error " + mm(error) + " > " + mm(stopping.last()) :
+                        "forward solve failed: " + stats.failure)
+                  << "): plain update" << std::endl;
+            ++result.rejected_steps;
+            force_plain = true;
+            continue;
+          }
+
+        w = candidate;
+        d = forward.displacement();
+        ++result.iterations;
+        result.partial_updates += partial;
+        record(result.iterations, stats, accelerated);
+        write_output(first_step + result.iterations, result.iterations);
+
+        if (error <= parameters.tolerance)
+          {
+            result.converged = true;
+            return finish("");
+          }
+        const std::string reason = stopping.check(
+          result.iterations, error, partial, stats.fraction, stats.failure);
+        if (!reason.empty())
+          return finish(reason);
+      }
+    return finish("not converged after " +
+                  std::to_string(parameters.max_iterations) +
+                  " iterations (error " + mm(stopping.last()) + ", tolerance " +
+                  mm(parameters.tolerance) + ")");
+  }
+} // namespace RestShape

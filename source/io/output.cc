@@ -1,0 +1,277 @@
+#include <deal.II/fe/mapping_fe_field.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <restshape/base/atomic_file.h>
+#include <restshape/io/output.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void
+    write_number(std::ostream &out, const double v)
+    {
+      if (std::isfinite(v))
+        out << std::setprecision(10) << v;
+      else
+        out << "null";
+    }
+    /// |v| of a three-component field, evaluated where DataOut writes.
+    class Magnitude : public DataPostprocessorScalar<3>
+    {
+    public:
+      Magnitude(const std::string &name)
+        : DataPostprocessorScalar<3>(name, update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<3> &inputs,
+        std::vector<Vector<double>>              &computed) const override
+      {
+        for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
+          {
+            double s = 0;
+            for (unsigned int c = 0; c < 3; ++c)
+              s += inputs.solution_values[p][c] * inputs.solution_values[p][c];
+            computed[p](0) = std::sqrt(s);
+          }
+      }
+    };
+  } // namespace
+
+  double
+  OutputWriter::length_scale() const
+  {
+    return 1. / length_unit;
+  }
+
+  void
+  Summary::set(const std::string &key, const Value &value)
+  {
+    for (auto &entry : entries)
+      if (entry.first == key)
+        {
+          entry.second = value;
+          return;
+        }
+    entries.emplace_back(key, value);
+  }
+
+  void
+  Summary::write(std::ostream &out) const
+  {
+    out << "{\n";
+    for (unsigned int i = 0; i < entries.size(); ++i)
+      {
+        out << "  \"" << entries[i].first << "\": ";
+        const Value &v = entries[i].second;
+        if (const double *x = std::get_if<double>(&v))
+          write_number(out, *x);
+        else if (const long *n = std::get_if<long>(&v))
+          out << *n;
+        else if (const bool *b = std::get_if<bool>(&v))
+          out << (*b ? "true" : "false");
+        else if (const std::string *s = std::get_if<std::string>(&v))
+          {
+            out << '"';
+            for (const char c : *s)
+              out << ((c == '"' || c == '\\') ? std::string("\\") + c :
+                                                std::string(1, c));
+            out << '"';
+          }
+        else
+          {
+            const auto &t = std::get<Tensor<1, 3>>(v);
+            out << '[';
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                write_number(out, t[d]);
+                out << (d < 2 ? ", " : "]");
+              }
+          }
+        out << (i + 1 < entries.size() ? ",\n" : "\n");
+      }
+    out << "}\n";
+  }
+
+  OutputWriter::OutputWriter(const std::string &directory,
+                             const double       length_unit,
+                             const MPI_Comm     comm)
+    : length_unit_name(length_unit == 1.0 ? "m" : "mm")
+    , directory(directory)
+    , length_unit(length_unit)
+    , comm(comm)
+  {}
+
+  std::string
+  OutputWriter::path(const std::string &name) const
+  {
+    return directory + "/" + name;
+  }
+
+  void
+  OutputWriter::write_text(
+    const std::string                         &name,
+    const std::function<void(std::ostream &)> &write) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_file_atomically(path(name), write);
+  }
+
+  void
+  OutputWriter::write_csv(const std::string                      &name,
+                          const std::vector<std::string>         &header,
+                          const std::vector<std::vector<double>> &rows) const
+  {
+    write_text(name, [&](std::ostream &out) {
+      for (unsigned int i = 0; i < header.size(); ++i)
+        out << header[i] << (i + 1 < header.size() ? "," : "\n");
+      for (const auto &row : rows)
+        for (unsigned int i = 0; i < row.size(); ++i)
+          {
+            write_number(out, row[i]);
+            out << (i + 1 < row.size() ? "," : "\n");
+          }
+    });
+  }
+
+  void
+  OutputWriter::write_fields(const ForwardProblem          &problem,
+                             const unsigned int             step,
+                             const double                   time,
+                             const std::vector<NodalField> &extra_nodal,
+                             const std::vector<CellField>  &extra_cell,
+                             const std::string             &name)
+  {
+    const DoFHandler<3> &dof_handler = problem.dof_handler();
+    const IndexSet      &owned       = problem.locally_owned_dofs();
+    const IndexSet      &relevant    = problem.locally_relevant_dofs();
+    const double         to_unit     = 1. / length_unit;
+
+    // Deformed geometry X + d, in the output length unit, as the Euler
+    // vector of a MappingFEField.
+    LinearAlgebra::distributed::Vector<double> euler(owned, relevant, comm);
+    for (const Node &node : problem.owned_nodes())
+      for (unsigned int c = 0; c < 3; ++c)
+        euler[node.dofs[c]] =
+          (node.position[c] + problem.displacement()[node.dofs[c]]) * to_unit;
+    euler.update_ghost_values();
+    MappingFEField<3, 3, LinearAlgebra::distributed::Vector<double>> deformed(
+      dof_handler, euler);
+
+    // Displacement from the rest shape: d - w.
+    VectorType displacement(owned, comm);
+    displacement = problem.displacement();
+    displacement -= problem.owned_copy(problem.rest_displacement());
+    displacement *= to_unit;
+    VectorType displacement_ghost(owned, relevant, comm);
+    displacement_ghost = displacement;
+
+    DataOut<3> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const auto as_vector =
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        3, DataComponentInterpretation::component_is_part_of_vector);
+    const auto as_scalars =
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        3, DataComponentInterpretation::component_is_scalar);
+    data_out.add_data_vector(
+      displacement_ghost,
+      std::vector<std::string>(3, "displacement_" + length_unit_name),
+      DataOut<3>::type_dof_data,
+      as_vector);
+    std::vector<VectorType>                 scaled(extra_nodal.size());
+    std::vector<std::unique_ptr<Magnitude>> magnitudes;
+    for (unsigned int f = 0; f < extra_nodal.size(); ++f)
+      {
+        scaled[f].reinit(owned, relevant, comm);
+        VectorType tmp(owned, comm);
+        tmp = *extra_nodal[f].vector;
+        tmp *= extra_nodal[f].scale;
+        scaled[f]         = tmp;
+        const bool vector = extra_nodal[f].names.size() == 1;
+        data_out.add_data_vector(
+          scaled[f],
+          vector ? std::vector<std::string>(3, extra_nodal[f].names[0]) :
+                   extra_nodal[f].names,
+          DataOut<3>::type_dof_data,
+          vector ? as_vector : as_scalars);
+        if (!extra_nodal[f].magnitude_name.empty())
+          {
+            magnitudes.push_back(
+              std::make_unique<Magnitude>(extra_nodal[f].magnitude_name));
+            data_out.add_data_vector(scaled[f], *magnitudes.back());
+          }
+      }
+
+    const unsigned int n_cells =
+      problem.mesh().triangulation().n_active_cells();
+    Vector<float> labels(n_cells), subdomain(n_cells);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          labels[cell->active_cell_index()]    = cell->material_id();
+          subdomain[cell->active_cell_index()] = cell->subdomain_id();
+        }
+    const Vector<float> stress = problem.von_mises_stress();
+    data_out.add_data_vector(labels, "label", DataOut<3>::type_cell_data);
+    data_out.add_data_vector(stress,
+                             "von_mises_Pa",
+                             DataOut<3>::type_cell_data);
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      data_out.add_data_vector(subdomain,
+                               "subdomain",
+                               DataOut<3>::type_cell_data);
+    for (const CellField &f : extra_cell)
+      data_out.add_data_vector(f.values, f.name, DataOut<3>::type_cell_data);
+
+    const unsigned int degree = problem.fe().degree;
+    data_out.build_patches(deformed, degree, DataOut<3>::curved_inner_cells);
+    DataOutBase::VtkFlags flags;
+    flags.time                     = time;
+    flags.write_higher_order_cells = degree > 1;
+    data_out.set_flags(flags);
+
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const std::string  base =
+      name.empty() ? "solution-" + Utilities::int_to_string(step, 4) : name;
+    std::vector<std::string> pieces;
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      pieces.push_back(n_ranks == 1 ?
+                         base + ".vtu" :
+                         base + "." + Utilities::int_to_string(r, 4) + ".vtu");
+    write_file_atomically(path(pieces[rank]),
+                          [&](std::ostream &out) { data_out.write_vtu(out); });
+    std::string record = pieces[0];
+    if (n_ranks > 1)
+      {
+        record = base + ".pvtu";
+        write_text(record, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+      }
+
+    if (!name.empty())
+      return;
+    for (auto it = pvd_records.begin(); it != pvd_records.end();)
+      it = (it->second == record) ? pvd_records.erase(it) : it + 1;
+    pvd_records.emplace_back(time, record);
+    for (auto it = visit_records.begin(); it != visit_records.end();)
+      it = (it->second == pieces) ? visit_records.erase(it) : it + 1;
+    visit_records.emplace_back(time, pieces);
+    write_text("solution.pvd", [&](std::ostream &out) {
+      DataOutBase::write_pvd_record(out, pvd_records);
+    });
+    write_text("solution.visit", [&](std::ostream &out) {
+      DataOutBase::write_visit_record(out, visit_records);
+    });
+  }
+} // namespace RestShape

@@ -1,0 +1,261 @@
+// LabelledMesh: the scene's triangulation, its labels and refinement.
+#include <deal.II/base/utilities.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <restshape/base/input_error.h>
+#include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/labelled_mesh.h>
+#include <restshape/mesh/mesh_checks.h>
+#include <restshape/mesh/mesh_pieces.h>
+#include <restshape/mesh/mesh_transforms.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  LabelledMesh::LabelledMesh(const MeshParameters &prm, const MPI_Comm comm)
+    : parameters(prm)
+  {
+    MeshDescription mesh = read_gmsh(prm.file, prm.length_unit);
+    check_mesh(mesh, prm.file);
+    // On the mesh as read (before any split into hexahedra).
+    gap.first = std::numeric_limits<double>::infinity();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const SurfaceGap g = narrowest_surface_gap(mesh, 0);
+        gap                = {g.width, g.location};
+      }
+    sort_along_hilbert_curve(mesh);
+    const bool file_is_tet = mesh.cells[0].vertices.size() == 4;
+    if (prm.cell_type == CellType::tetrahedra && !file_is_tet)
+      throw InputError(prm.file,
+                       "Mesh/Cell type",
+                       "the mesh has hexahedra; Cell type = tetrahedra needs "
+                       "a tetrahedral mesh (use Cell type = hexahedra)");
+    if (prm.cell_type == CellType::hexahedra && file_is_tet)
+      {
+        mesh = split_tetrahedra_into_hexahedra(mesh);
+        check_mesh(mesh, prm.file);
+      }
+
+    const MeshPieces pieces = face_connected_pieces(mesh);
+    if (pieces.n_cells.size() > 1 &&
+        Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "Warning: " << prm.file << " (Mesh/File) has "
+                << pieces.n_cells.size() << " pieces not joined by faces ("
+                << pieces.n_cells[0] << " cells in the largest, "
+                << pieces.n_cells.back()
+                << " in the smallest). A piece held at a vertex or an edge "
+                   "can rotate freely about it and stop Newton's method; "
+                   "restshape-mesh removes small ones."
+                << std::endl;
+    for (const auto &cell : mesh.cells)
+      ++counts[cell.material_id];
+    const bool simplex = prm.cell_type == CellType::tetrahedra;
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      tria = std::make_unique<Triangulation<3>>();
+    else if (simplex)
+      tria = std::make_unique<parallel::shared::Triangulation<3>>(
+        comm,
+        Triangulation<3>::none,
+        false,
+        parallel::shared::Triangulation<3>::partition_metis);
+    else
+      tria = std::make_unique<parallel::distributed::Triangulation<3>>(comm);
+
+    BoundingBox<3> box(mesh.vertices);
+    bounding_diameter = box.get_boundary_points().first.distance(
+      box.get_boundary_points().second);
+
+    description = std::move(mesh);
+    create_triangulation();
+    for (unsigned int r = 0; r < prm.global_refinements; ++r)
+      refine_global();
+  }
+
+  std::vector<Point<3>>
+  LabelledMesh::read_rest_shape(const std::string &file) const
+  {
+    const std::string parameter = "Mesh/Rest shape file";
+    MeshDescription   rest;
+    try
+      {
+        rest = read_gmsh(file, parameters.length_unit);
+        check_mesh(rest, file);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(file, parameter, e.message);
+      }
+    if (rest.cells.size() != tria->n_global_active_cells())
+      throw InputError(
+        file,
+        parameter,
+        "has " + std::to_string(rest.cells.size()) + " cells, the mesh " +
+          std::to_string(tria->n_global_active_cells()) +
+          "; expected the same cells in the same order (a rest_shape.msh "
+          "written with the same Mesh settings)");
+    std::vector<Point<3>> positions(tria->n_vertices());
+    std::vector<bool>     set(tria->n_vertices(), false);
+    const double          tolerance = 1e-9 * bounding_diameter;
+    unsigned int          c         = 0;
+    for (const auto &cell : tria->active_cell_iterators())
+      {
+        const auto &rest_cell = rest.cells[c++];
+        if (rest_cell.vertices.size() != cell->n_vertices())
+          throw InputError(file,
+                           parameter,
+                           "the cell types differ from the mesh's");
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          {
+            const Point<3> &p = rest.vertices[rest_cell.vertices[v]];
+            const auto      i = cell->vertex_index(v);
+            if (set[i] && positions[i].distance(p) > tolerance)
+              throw InputError(
+                file,
+                parameter,
+                "its cells are not connected like the mesh's (cell " +
+                  std::to_string(c) +
+                  "); expected the same cells in the same order");
+            positions[i] = p;
+            set[i]       = true;
+          }
+      }
+    return positions;
+  }
+
+  void
+  LabelledMesh::create_triangulation()
+  {
+    tria->clear();
+    tria->create_triangulation(description.vertices,
+                               description.cells,
+                               SubCellData());
+    if (!is_simplex())
+      description = MeshDescription(); // p4est/deal.II refine hexahedra
+  }
+
+  void
+  LabelledMesh::refine_global(const std::function<void()> &before_change)
+  {
+    if (is_simplex())
+      {
+        if (before_change)
+          before_change();
+        description = refine_tetrahedra(description);
+        create_triangulation();
+        return;
+      }
+    tria->set_all_refine_flags();
+    execute_refinement(before_change);
+  }
+
+  void
+  LabelledMesh::execute_refinement(const std::function<void()> &before_change)
+  {
+    tria->prepare_coarsening_and_refinement();
+    if (before_change)
+      before_change();
+    tria->execute_coarsening_and_refinement();
+  }
+
+  void
+  LabelledMesh::refine_adaptive(const Vector<float>         &indicators,
+                                const double                 refine_fraction,
+                                const double                 coarsen_fraction,
+                                const std::function<void()> &before_change)
+  {
+    Assert(!is_simplex(), ExcInternalError());
+    // The rule of deal.II's serial GridRefinement::
+    // refine_and_coarsen_fixed_number (refine the cells whose indicator is
+    // at least the n-th largest, ties included; coarsen those at most the
+    // m-th smallest), applied to the indicators of all ranks: the marked
+    // cells do not depend on the number of ranks. (p4est's parallel
+    // version finds its thresholds by bisection and breaks ties
+    // differently: on the symmetric column it refined 72 cells where the
+    // serial rule refines 136.)
+    std::vector<float> owned;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned.push_back(indicators[cell->active_cell_index()]);
+    std::vector<float> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(tria->get_communicator(), owned))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end(), std::greater<float>());
+    const auto n_refine =
+      static_cast<std::size_t>(refine_fraction * all.size());
+    const auto n_coarsen =
+      static_cast<std::size_t>(coarsen_fraction * all.size());
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const float value = indicators[cell->active_cell_index()];
+          if (n_refine > 0 && value >= all[n_refine - 1] && value > 0)
+            cell->set_refine_flag();
+          else if (n_coarsen > 0 && value <= all[all.size() - n_coarsen])
+            cell->set_coarsen_flag();
+        }
+    execute_refinement(before_change);
+  }
+
+  Triangulation<3> &
+  LabelledMesh::triangulation()
+  {
+    return *tria;
+  }
+
+  const Triangulation<3> &
+  LabelledMesh::triangulation() const
+  {
+    return *tria;
+  }
+
+  bool
+  LabelledMesh::is_simplex() const
+  {
+    return parameters.cell_type == CellType::tetrahedra;
+  }
+
+  const std::map<Label, unsigned int> &
+  LabelledMesh::label_counts() const
+  {
+    return counts;
+  }
+
+  std::set<Label>
+  LabelledMesh::labels() const
+  {
+    std::set<Label> result;
+    for (const auto &[label, n] : counts)
+      result.insert(label);
+    return result;
+  }
+
+  std::pair<double, Point<3>>
+  LabelledMesh::narrowest_gap() const
+  {
+    return gap;
+  }
+
+  double
+  LabelledMesh::diameter() const
+  {
+    return bounding_diameter;
+  }
+
+  double
+  LabelledMesh::minimum_cell_diameter() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::min(h, cell->diameter());
+    return Utilities::MPI::min(h, tria->get_communicator());
+  }
+} // namespace RestShape

@@ -1,0 +1,218 @@
+#include <nifti2_io.h>
+#include <restshape/base/atomic_file.h>
+#include <restshape/base/input_error.h>
+#include <restshape/mesher/labelled_image.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+namespace RestShape
+{
+  std::array<double, 3>
+  LabelledImage::spacing() const
+  {
+    std::array<double, 3> h;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        double s = 0;
+        for (unsigned int r = 0; r < 3; ++r)
+          s += index_to_mm[r][d] * index_to_mm[r][d];
+        h[d] = std::sqrt(s);
+      }
+    return h;
+  }
+
+  dealii::Point<3>
+  LabelledImage::position(const double i, const double j, const double k) const
+  {
+    dealii::Tensor<1, 3> ijk;
+    ijk[0] = i;
+    ijk[1] = j;
+    ijk[2] = k;
+    return dealii::Point<3>(index_to_mm * ijk + offset);
+  }
+
+  std::map<unsigned int, std::size_t>
+  LabelledImage::label_counts() const
+  {
+    std::map<unsigned int, std::size_t> counts;
+    for (const std::uint8_t l : labels)
+      if (l != 0)
+        ++counts[l];
+    return counts;
+  }
+
+  namespace
+  {
+    struct NiftiDeleter
+    {
+      void
+      operator()(nifti_image *image) const
+      {
+        nifti_image_free(image);
+      }
+    };
+
+    template <typename T>
+    void
+    convert(const void *data, const std::size_t n, std::vector<double> &values)
+    {
+      const T *typed = static_cast<const T *>(data);
+      values.assign(typed, typed + n);
+    }
+  } // namespace
+
+  LabelledImage
+  read_labelled_image(const std::string &file, const std::string &parameter)
+  {
+    auto fail = [&](const std::string &message) {
+      return InputError(file, parameter, message);
+    };
+    if (!std::filesystem::is_regular_file(file) ||
+        ::access(file.c_str(), R_OK) != 0)
+      throw fail("cannot read the file; expected a labelled NIfTI image "
+                 "(.nii or .nii.gz)");
+
+    nifti_set_debug_level(0);
+    std::unique_ptr<nifti_image, NiftiDeleter> nim(
+      nifti_image_read(file.c_str(), 1));
+    if (!nim || nim->data == nullptr)
+      throw fail("not a readable NIfTI image; expected a labelled NIfTI "
+                 "image (.nii or .nii.gz)");
+    if (nim->nx < 2 || nim->ny < 2 || nim->nz < 2 || nim->nt > 1 || nim->nu > 1)
+      throw fail("the image has dimensions " + std::to_string(nim->nx) + "x" +
+                 std::to_string(nim->ny) + "x" + std::to_string(nim->nz) + "x" +
+                 std::to_string(nim->nt) +
+                 "; expected a 3d volume of at least 2x2x2 voxels");
+
+    const std::size_t   n = nim->nvox;
+    std::vector<double> values;
+    switch (nim->datatype)
+      {
+        case DT_UINT8:
+          convert<std::uint8_t>(nim->data, n, values);
+          break;
+        case DT_INT8:
+          convert<std::int8_t>(nim->data, n, values);
+          break;
+        case DT_UINT16:
+          convert<std::uint16_t>(nim->data, n, values);
+          break;
+        case DT_INT16:
+          convert<std::int16_t>(nim->data, n, values);
+          break;
+        case DT_UINT32:
+          convert<std::uint32_t>(nim->data, n, values);
+          break;
+        case DT_INT32:
+          convert<std::int32_t>(nim->data, n, values);
+          break;
+        case DT_FLOAT32:
+          convert<float>(nim->data, n, values);
+          break;
+        case DT_FLOAT64:
+          convert<double>(nim->data, n, values);
+          break;
+        default:
+          throw fail(std::string("unsupported voxel type ") +
+                     nifti_datatype_string(nim->datatype) +
+                     "; expected integer labels (uint8, int16, ...)");
+      }
+    const bool scaled =
+      nim->scl_slope != 0 && (nim->scl_slope != 1 || nim->scl_inter != 0);
+
+    LabelledImage image;
+    image.size = {{static_cast<unsigned int>(nim->nx),
+                   static_cast<unsigned int>(nim->ny),
+                   static_cast<unsigned int>(nim->nz)}};
+    image.labels.resize(n);
+    for (std::size_t v = 0; v < n; ++v)
+      {
+        const double value =
+          scaled ? nim->scl_slope * values[v] + nim->scl_inter : values[v];
+        if (!(value >= 0 && value <= 255 && value == std::round(value)))
+          throw fail("voxel " + std::to_string(v) + " holds " +
+                     number_text(value) +
+                     "; expected whole-number labels from 0 (background) "
+                     "to 255");
+        image.labels[v] = static_cast<std::uint8_t>(value);
+      }
+
+    const nifti_dmat44 *map = nullptr;
+    if (nim->sform_code > 0)
+      {
+        map              = &nim->sto_xyz;
+        image.xform_code = nim->sform_code;
+      }
+    else if (nim->qform_code > 0)
+      {
+        map              = &nim->qto_xyz;
+        image.xform_code = nim->qform_code;
+      }
+    for (unsigned int r = 0; r < 3; ++r)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          image.index_to_mm[r][c] =
+            map ? map->m[r][c] : (r == c ? std::abs((&nim->dx)[r]) : 0.);
+        image.offset[r] = map ? map->m[r][3] : 0.;
+      }
+    const double det = dealii::determinant(image.index_to_mm);
+    if (!(std::abs(det) > 0) || !std::isfinite(det))
+      throw fail("the voxel-to-millimetre map of the header is singular; "
+                 "expected positive voxel sizes");
+    if (image.label_counts().empty())
+      throw fail("the image holds no label (every voxel is 0); expected "
+                 "labelled tissue (labels 1 to 255)");
+    return image;
+  }
+
+  void
+  write_labelled_image(const LabelledImage &image,
+                       const std::string   &file,
+                       const std::string   &parameter)
+  {
+    const int64_t dims[8] = {
+      3, image.size[0], image.size[1], image.size[2], 1, 1, 1, 1};
+    nifti_set_debug_level(0);
+    std::unique_ptr<nifti_image, NiftiDeleter> nim(
+      nifti_make_new_nim(dims, DT_UINT8, 1));
+    if (!nim)
+      throw InputError(file, parameter, "cannot allocate the image");
+    std::memcpy(nim->data, image.labels.data(), image.labels.size());
+    nim->nifti_type = NIFTI_FTYPE_NIFTI1_1;
+    const auto h    = image.spacing();
+    nim->dx = nim->pixdim[1] = h[0];
+    nim->dy = nim->pixdim[2] = h[1];
+    nim->dz = nim->pixdim[3] = h[2];
+    nim->xyz_units           = NIFTI_UNITS_MM;
+    nim->sform_code          = image.xform_code;
+    nim->qform_code          = 0;
+    for (unsigned int r = 0; r < 4; ++r)
+      for (unsigned int c = 0; c < 4; ++c)
+        nim->sto_xyz.m[r][c] =
+          r == 3 ? (c == 3 ? 1. : 0.) :
+                   (c == 3 ? image.offset[r] : image.index_to_mm[r][c]);
+    nim->sto_ijk           = nifti_dmat44_inverse(nim->sto_xyz);
+    const std::string name = file;
+    if (!(name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0) &&
+        !(name.size() > 7 && name.compare(name.size() - 7, 7, ".nii.gz") == 0))
+      throw InputError(
+        file,
+        parameter,
+        "unsupported file name; expected a name ending in .nii or .nii.gz");
+    write_named_file_atomically(
+      file,
+      [&](const std::string &tmp) {
+        if (nifti_set_filenames(nim.get(), tmp.c_str(), 0, 1) != 0)
+          return false;
+        nifti_image_write(nim.get());
+        return true;
+      },
+      parameter,
+      "cannot write the image; expected a writable location");
+  }
+} // namespace RestShape

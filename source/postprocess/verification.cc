@@ -1,0 +1,127 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <restshape/base/input_error.h>
+#include <restshape/postprocess/verification.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  /// The parsed expressions, with SI input and output.
+  class ExactDisplacement::SIFunction : public Function<3>
+  {
+  public:
+    SIFunction(const std::string &expressions, const double unit)
+      : Function<3>(3)
+      , parser(3, 0., 1e-3)
+      , unit(unit)
+    {
+      std::map<std::string, double> constants;
+      parser.initialize("x,y,z", expressions, constants);
+      parser.set_formula(AutoDerivativeFunction<3>::FourthOrder);
+    }
+
+    double
+    value(const Point<3> &p, const unsigned int c) const override
+    {
+      return unit * parser.value(Point<3>(p / unit), c);
+    }
+
+    Tensor<1, 3>
+    gradient(const Point<3> &p, const unsigned int c) const override
+    {
+      return parser.gradient(Point<3>(p / unit), c);
+    }
+
+  private:
+    FunctionParser<3> parser;
+    const double      unit;
+  };
+
+  ExactDisplacement::ExactDisplacement(const std::string &expressions,
+                                       const double       length_unit,
+                                       const std::string &parameter)
+  {
+    // deal.II's FunctionParser prints muparser's messages to std::cerr
+    // before it throws; keep them off the terminal (we report one line).
+    std::ostringstream silenced;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
+    try
+      {
+        auto f = std::make_unique<SIFunction>(expressions, length_unit);
+        for (unsigned int c = 0; c < 3; ++c)
+          f->value(Point<3>(), c); // muparser reports some errors only here
+        function = std::move(f);
+        std::cerr.rdbuf(cerr_buffer);
+      }
+    catch (const std::exception &exc)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        throw InputError("",
+                         parameter,
+                         "cannot parse '" + expressions + "' (" +
+                           one_line_message(exc) +
+                           "); expected three muparser expressions of x, y, "
+                           "z separated by ';'");
+      }
+  }
+
+  DisplacementErrors
+  ExactDisplacement::errors(const ForwardProblem &problem,
+                            const VectorType     &field) const
+  {
+    const auto &dof_handler = problem.dof_handler();
+    const auto  comm = dof_handler.get_triangulation().get_communicator();
+    VectorType  u_owned(problem.locally_owned_dofs(), comm);
+    u_owned = field;
+    VectorType u(problem.locally_owned_dofs(),
+                 problem.locally_relevant_dofs(),
+                 comm);
+    u = u_owned;
+
+    const unsigned int  degree = problem.fe().degree + 2;
+    const Quadrature<3> quadrature =
+      problem.mesh().is_simplex() ?
+        Quadrature<3>(QGaussSimplex<3>(std::min(degree, 4u))) :
+        Quadrature<3>(QGauss<3>(degree));
+    const auto &tria = dof_handler.get_triangulation();
+
+    const auto norm_of = [&](const VectorType           &v,
+                             const Function<3>          &f,
+                             const VectorTools::NormType norm) {
+      Vector<float> cellwise(tria.n_active_cells());
+      VectorTools::integrate_difference(
+        problem.mapping(), dof_handler, v, f, cellwise, quadrature, norm);
+      return VectorTools::compute_global_error(tria, cellwise, norm);
+    };
+    VectorType                 zero(problem.locally_owned_dofs(),
+                    problem.locally_relevant_dofs(),
+                    comm);
+    Functions::ZeroFunction<3> zero_function(3);
+
+    DisplacementErrors e;
+    const double l2_exact = norm_of(zero, *function, VectorTools::L2_norm);
+    const double h1_exact = norm_of(zero, *function, VectorTools::H1_seminorm);
+    e.l2_relative = norm_of(u, *function, VectorTools::L2_norm) / l2_exact;
+    // A translation has no gradient (up to the round-off of the function's
+    // difference quotients): the H1 error is then absolute.
+    const double l2_scale = l2_exact / GridTools::diameter(tria);
+    e.h1_relative         = norm_of(u, *function, VectorTools::H1_seminorm) /
+                    (h1_exact > 1e-8 * l2_scale ? h1_exact : 1.0);
+
+    for (const Node &node : problem.owned_nodes())
+      {
+        Tensor<1, 3> diff;
+        for (unsigned int c = 0; c < 3; ++c)
+          diff[c] = u[node.dofs[c]] - function->value(node.position, c);
+        e.max_nodal_error = std::max(e.max_nodal_error, diff.norm());
+      }
+    e.max_nodal_error = Utilities::MPI::max(e.max_nodal_error, comm);
+    return e;
+  }
+} // namespace RestShape
