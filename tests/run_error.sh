@@ -2,6 +2,9 @@
 # Error test: restshape must reject bad input with exactly one line on stderr
 # that matches REGEX, a non-zero exit code below 128 (no crash), no stack
 # trace, and leave an earlier result in the output directory untouched.
+# EXIT_CODE 2 (a solver that failed): the one line, and a summary.json that
+# says "converged": false with the failure (its figures), instead.
+# Environment: STDOUT_REGEX, if set, must match the screen output (stdout).
 #
 # usage: run_error.sh RESTSHAPE OUTPUT_DIRECTORY EXIT_CODE REGEX ARGS...
 set -u
@@ -30,6 +33,15 @@ fail() {
 [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "expected exactly one line on stderr"
 grep -qiE 'stacktrace|stack trace|--------' "$out/stderr" && fail "stack trace or deal.II banner on stderr"
 grep -qE -- "$regex" "$out/stderr" || fail "stderr does not match /$regex/"
-cmp -s "$out/summary.json" "$out/sentinel" || fail "an earlier result was overwritten"
-[ -z "$(ls "$out" | grep -v -E '^(summary.json|sentinel|stdout|stderr)$')" ] || fail "files were written: $(ls "$out")"
+if [ -n "${STDOUT_REGEX:-}" ]; then
+  grep -qE -- "$STDOUT_REGEX" "$out/stdout" || fail "stdout does not match /$STDOUT_REGEX/"
+fi
+if [ "$expected_code" -eq 2 ]; then
+  grep -q '"converged": false' "$out/summary.json" || fail "summary.json does not say converged: false"
+  grep -q '"failure"' "$out/summary.json" || fail "summary.json does not give the failure"
+  grep -qiE 'nan|inf' "$out/summary.json" && fail "NaN or Inf in summary.json"
+else
+  cmp -s "$out/summary.json" "$out/sentinel" || fail "an earlier result was overwritten"
+  [ -z "$(ls "$out" | grep -v -E '^(summary.json|sentinel|stdout|stderr)$')" ] || fail "files were written: $(ls "$out")"
+fi
 echo "ok: $(cat "$out/stderr")"

@@ -1,6 +1,10 @@
+#include <deal.II/distributed/tria.h>
+
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/forward/load_scales.h>
+#include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
@@ -38,6 +42,7 @@ namespace RestShape
       }
     setup_problems();
     check_scene();
+    report_load_scales();
     VectorType rest = initial_rest_shape();
     prepare_output();
 
@@ -55,6 +60,7 @@ namespace RestShape
         const VectorType *start = guess ? &*guess : nullptr;
         stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
                                              solve_forward(rest, start);
+        check_stability_of_equilibrium(stats);
         postprocess(cycle, stats);
       }
     if (parameters.prestress_comparison.enabled)
@@ -127,6 +133,15 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
+    if (forward && parameters.solver.check_stability &&
+        !forward->tangent_is_symmetric())
+      throw InputError(
+        prm_file,
+        "Solver/Check stability",
+        "the follower pressure acts on a surface with free edges, which is "
+        "not conservative (its tangent is not symmetric): stability is "
+        "then not a question of the energy; expected Check stability = "
+        "false, or pressure faces that are closed or held at their edges");
     if (!forward || contact || parameters.boundary.support_stiffness > 0)
       return;
     // Without contact or elastic support, every displacement component must
@@ -147,14 +162,44 @@ namespace RestShape
   }
 
   void
+  Simulator::check_obstacle_placement() const
+  {
+    const std::vector<Point<3>> &targets = mesh->targets();
+    if (targets.empty())
+      {
+        contact->check_placement();
+        return;
+      }
+    // A rest shape may cross the obstacle; its target may not.
+    const auto               &vertices = mesh->triangulation().get_vertices();
+    std::vector<Tensor<1, 3>> shift(vertices.size());
+    for (unsigned int v = 0; v < targets.size(); ++v)
+      shift[v] = targets[v] - vertices[v];
+    const VectorType field = forward->interpolate_vertex_field(shift);
+    VectorType       ghosted(forward->locally_owned_dofs(),
+                       forward->locally_relevant_dofs(),
+                       comm);
+    ghosted = field;
+    contact->check_placement(&ghosted);
+  }
+
+  void
+  Simulator::report_load_scales() const
+  {
+    const LoadScales scales = compute_load_scales(*forward);
+    pcout << scales.text() << std::endl;
+    for (const std::string &warning : scales.warnings())
+      pcout << "Warning: " << warning << std::endl;
+  }
+
+  void
   Simulator::setup_problems()
   {
     forward->setup();
     if (contact)
       {
         contact->setup();
-        contact->gap_tolerance =
-          parameters.solver.newton_tolerance * mesh->diameter();
+        check_obstacle_placement();
         pcout << "Contact: " << parameters.contact.obstacle_file << ", "
               << contact->n_candidates() << " candidate nodes, allowed side: "
               << (parameters.contact.inside ? "inside" : "outside")
@@ -303,9 +348,17 @@ namespace RestShape
     if (!inverse_result.converged)
       {
         stats.failure = inverse_result.reason;
+        // Whether the iteration had a stable target to converge to.
+        if (parameters.solver.check_stability)
+          {
+            const std::string unstable = stability_text();
+            stats.failure += unstable.empty() ?
+                               "; the last equilibrium is stable" :
+                               "; the last equilibrium is " + unstable;
+          }
         write_summary(stats);
         throw SolverFailure("the inverse iteration did not converge: " +
-                            inverse_result.reason);
+                            stats.failure);
       }
     pcout << "  Rest shape found in " << inverse_result.iterations
           << " iterations (" << inverse_result.forward_solves
@@ -314,8 +367,25 @@ namespace RestShape
           << inverse_result.mean_error * 1e3 << " mm, max "
           << inverse_result.max_error * 1e3 << " mm" << std::endl;
 
-    // The rest shape as a mesh (vertices only: the edge nodes of quadratic
-    // elements are not in a linear mesh file), and the pre-stressed state.
+    write_rest_shape();
+    return stats;
+  }
+
+  void
+  Simulator::write_rest_shape() const
+  {
+    // The p4est triangulation of a rank holds only its part of a refined
+    // mesh: the whole rest shape is not known on any one rank.
+    if (dynamic_cast<const parallel::distributed::Triangulation<3> *>(
+          &mesh->triangulation()) != nullptr &&
+        Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        pcout << "  rest_shape.msh is not written: hexahedra on several "
+                 "ranks (p4est) hold no rank with the whole mesh; run on one "
+                 "rank or with tetrahedra"
+              << std::endl;
+        return;
+      }
     const VectorType     &w        = forward->rest_displacement();
     const auto           &vertices = mesh->triangulation().get_vertices();
     std::vector<Point<3>> rest_positions(vertices);
@@ -326,13 +396,52 @@ namespace RestShape
             rest_positions[cell->vertex_index(v)][c] =
               vertices[cell->vertex_index(v)][c] +
               w[cell->vertex_dof_index(v, c)];
+    // It remembers its target (the mesh) and the image's masses, so that a
+    // forward run from it alone reaches the target with the same mass.
+    RestShapeData rest_data;
+    rest_data.mass_ratios                = forward->image_mass_ratios();
+    const std::vector<Point<3>> &targets = mesh->targets();
+    rest_data.target                     = [&](const unsigned int v) {
+      return targets.empty() ? vertices[v] : targets[v];
+    };
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       write_gmsh(
         mesh->triangulation(),
         [&](unsigned int v) { return rest_positions[v]; },
         parameters.mesh.length_unit,
-        output->path("rest_shape.msh"));
-    return stats;
+        output->path("rest_shape.msh"),
+        &rest_data);
+  }
+
+  std::string
+  Simulator::stability_text()
+  {
+    TimerOutput::Scope    scope(timer, "Stability");
+    const StabilityResult s = check_stability(*forward);
+    summary.set("stable", s.stable());
+    summary.set("negative_eigenvalues", long(s.negative_eigenvalues));
+    summary.set("smallest_eigenvalue_per_s2", s.smallest_eigenvalue);
+    pcout << "  Stability: " << s.text() << std::endl;
+    return s.stable() ? std::string() : s.text();
+  }
+
+  void
+  Simulator::check_stability_of_equilibrium(const SolveStatistics &stats)
+  {
+    if (!parameters.solver.check_stability)
+      return;
+    const std::string unstable = stability_text();
+    if (unstable.empty())
+      return;
+    SolveStatistics failed = stats;
+    failed.converged       = false;
+    failed.failure =
+      (parameters.inverse.enabled ?
+         "no stable rest shape reaches the target: its equilibrium is " :
+         "the equilibrium is ") +
+      unstable;
+    write_summary(failed);
+    throw SolverFailure(failed.failure);
   }
 
   void
@@ -449,7 +558,19 @@ namespace RestShape
         pcout << "  Equilibrium vs mesh geometry: mean " << mean_e * 1e3
               << " mm, max " << max_e * 1e3 << " mm" << std::endl;
       }
+    else if (!parameters.inverse.enabled && !mesh->targets().empty())
+      {
+        // A rest shape that carries its target (rest_shape.msh).
+        const auto [mean_e, max_e] = forward->distance_to(mesh->targets());
+        summary.set("mean_error_mm", mean_e * 1e3);
+        summary.set("max_error_mm", max_e * 1e3);
+        pcout << "  Equilibrium vs the target carried by "
+              << parameters.mesh.file << ": mean " << mean_e * 1e3
+              << " mm, max " << max_e * 1e3 << " mm" << std::endl;
+      }
     summary.set("external_force_N", external);
+    const Tensor<1, 3> surface = forward->surface_force(forward->load());
+    summary.set("surface_force_N", surface);
     summary.set("support_reaction_N", reaction);
     summary.set("force_balance_relative",
                 (external + reaction + contact_force + support_force).norm() /
@@ -462,9 +583,12 @@ namespace RestShape
         summary.set("contact_force_N", contact_force);
         summary.set("active_set_iterations",
                     long(stats.active_set_changes + 1));
-        summary.set("max_penetration_mm",
-                    contact->max_penetration(true) * 1e3 + 0.);
-        summary.set("nodes_outside", long(contact->n_outside()));
+        const ContactConditions &conditions = forward->contact_conditions();
+        summary.set("contact_conditions_hold", conditions.satisfied());
+        summary.set("max_penetration_mm", conditions.max_penetration * 1e3);
+        summary.set("max_pull_Pa", conditions.pulling.worst);
+        summary.set("nodes_off_obstacle", long(conditions.off.nodes));
+        summary.set("nodes_outside", long(conditions.outside));
         const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
         summary.set("fixed_plane_nodes", long(n_fixed));
         summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
@@ -575,14 +699,25 @@ namespace RestShape
           << (external + reaction + contact_force + support_force).norm()
           << " N of " << external.norm() << " N; potential energy "
           << forward->potential_energy() << " J" << std::endl;
+    if (forward->surface_load().acts(forward->load()))
+      pcout << "  Surface pressure: resultant " << surface << " N ("
+            << (forward->surface_load().follower() ? "follower" : "dead")
+            << " load)" << std::endl;
     if (parameters.boundary.support_stiffness > 0)
       pcout << "  Elastic support: force " << support_force << " N"
             << std::endl;
     if (contact)
       {
+        const ContactConditions &conditions = forward->contact_conditions();
         pcout << "  Contact: " << contact->n_active() << " active nodes, force "
               << contact_force << " N, largest penetration "
-              << contact->max_penetration(true) * 1e3 << " mm" << std::endl;
+              << conditions.max_penetration * 1e3 << " mm; "
+              << conditions.text() << std::endl;
+        if (conditions.outside > 0)
+          pcout << "  Contact: " << conditions.outside
+                << " candidate nodes lie beyond the obstacle (they started "
+                   "there and are free until they come back in)"
+                << std::endl;
         const auto [n_fixed, fixed_distance] = contact->fixed_plane_nodes();
         if (n_fixed > 0)
           pcout << "  Contact: " << n_fixed

@@ -228,8 +228,9 @@ namespace RestShape
                       Patterns::Double(),
                       "Stiffness k in N/m^3 (Pa of traction per m of "
                       "displacement) of an elastic foundation on the outer "
-                      "faces: traction -k u, u the displacement from the rest "
-                      "shape, in every direction. It stands for tethers such "
+                      "faces: traction -k u per unit area of the rest shape's "
+                      "faces, u the displacement from the rest shape, in "
+                      "every direction. It stands for tethers such "
                       "as the arachnoid trabeculae between brain and skull, "
                       "which are stress-free in the rest shape. 1e4 N/m^3 "
                       "(10 Pa per mm) holds a 1.5 kPa brain against rotating "
@@ -274,17 +275,45 @@ namespace RestShape
                       "0",
                       Patterns::Double(),
                       "Density in kg/m^3 of a fluid the body is immersed in "
-                      "(CSF: about 1007). Every body force acts on the "
-                      "density minus this (Archimedes: the resultant of the "
-                      "fluid's hydrostatic pressure on an immersed body), so "
-                      "a brain of 1040 kg/m^3 in CSF weighs 3.2 % of its "
-                      "weight. 0: no fluid.");
+                      "(CSF: about 1007); how it acts is set by Fluid load. "
+                      "0: no fluid.");
+    prm.declare_entry(
+      "Fluid load",
+      "buoyancy",
+      Patterns::Selection("buoyancy|hydrostatic pressure"),
+      "How the fluid of Fluid density acts. buoyancy: every body force acts "
+      "on the density minus the fluid's (Archimedes' resultant, as if the "
+      "whole body were immersed; a brain of 1040 kg/m^3 in CSF weighs 3.2 % "
+      "of its weight). hydrostatic pressure: the full density, and on the "
+      "pressure faces below the Fluid level the pressure "
+      "rho_fluid a . (x - x_level) in Pa (a: the body acceleration, x the "
+      "current position), added to Surface pressure; what CSF does on a "
+      "surface whose other parts are held (a closed immersed surface "
+      "receives exactly its buoyancy).");
+    prm.declare_entry("Fluid level",
+                      "",
+                      Patterns::Anything(),
+                      "A point 'x, y, z' (mesh length unit) on the fluid's "
+                      "free surface, which is normal to the body "
+                      "acceleration; faces above it are drained. Empty: the "
+                      "highest point of the pressure faces (the whole "
+                      "surface is wetted). Only with Fluid load = "
+                      "hydrostatic pressure.");
     prm.declare_entry("Surface pressure",
                       "0",
                       Patterns::Double(),
                       "Uniform pressure in Pa on the outer surface (e.g. "
-                      "CSF), acting along the inward normal. It is a dead "
-                      "load on the mesh (target) geometry.");
+                      "CSF), along the inward normal of the faces; see "
+                      "Pressure load.");
+    prm.declare_entry(
+      "Pressure load",
+      "follower",
+      Patterns::Selection("follower|dead"),
+      "follower: the pressure acts on the current (deformed) surface along "
+      "its current normal, in every solve (a fluid's pressure; Newton uses "
+      "its exact tangent). dead: the same tractions fixed on the faces of "
+      "Mesh/File, whatever the body does (right only where the equilibrium "
+      "is the mesh geometry itself).");
     prm.declare_entry("Pressure labels",
                       "",
                       Patterns::Anything(),
@@ -300,12 +329,30 @@ namespace RestShape
     prm.enter_subsection("Loads");
     gravity       = parse_vector(prm.get("Gravity"), "Loads/Gravity");
     pressure      = prm.get_double("Surface pressure");
+    follower      = prm.get("Pressure load") == "follower";
     fluid_density = prm.get_double("Fluid density");
     if (!(fluid_density >= 0))
       throw InputError("",
                        "Loads/Fluid density",
                        "'" + prm.get("Fluid density") +
                          "': expected a density >= 0 in kg/m^3");
+    hydrostatic = prm.get("Fluid load") == "hydrostatic pressure";
+    if (hydrostatic && fluid_density == 0)
+      throw InputError("",
+                       "Loads/Fluid load",
+                       "hydrostatic pressure needs the fluid's density: "
+                       "expected Loads/Fluid density > 0 in kg/m^3");
+    has_fluid_level = !dealii::Utilities::trim(prm.get("Fluid level")).empty();
+    if (has_fluid_level)
+      {
+        if (!hydrostatic)
+          throw InputError("",
+                           "Loads/Fluid level",
+                           "a fluid level needs Fluid load = hydrostatic "
+                           "pressure");
+        fluid_level = dealii::Point<3>(
+          parse_vector(prm.get("Fluid level"), "Loads/Fluid level"));
+      }
     pressure_labels =
       parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
     prm.leave_subsection();
@@ -401,6 +448,19 @@ namespace RestShape
                       "increment the next one doubles, up to the whole. "
                       "Raise it for very fine meshes whose first Newton "
                       "steps at the full load invert cells.");
+    prm.declare_entry(
+      "Check stability",
+      "false",
+      Patterns::Bool(),
+      "After the final equilibrium of every refinement cycle (and of an "
+      "inverse iteration that stops unconverged), compute the smallest "
+      "eigenvalues of the constrained tangent against the lumped mass "
+      "(1/s^2; shift-invert Lanczos) and the number of negative ones "
+      "found, reported in summary.json. An "
+      "unstable equilibrium (a negative eigenvalue: a column above its "
+      "buckling height, a body free to turn under gravity) stops the run "
+      "with its mode. Needs Linear solver = direct and a symmetric "
+      "tangent.");
     prm.leave_subsection();
   }
 
@@ -423,6 +483,13 @@ namespace RestShape
     tangent_shift             = prm.get_double("Tangent shift");
     max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
     initial_load_steps        = prm.get_integer("Initial load steps");
+    check_stability           = prm.get_bool("Check stability");
+    if (check_stability && linear_solver != LinearSolverType::direct)
+      throw InputError("",
+                       "Solver/Check stability",
+                       "the stability check needs the inertia of a direct "
+                       "factorisation; expected Solver/Linear solver = "
+                       "direct");
     prm.leave_subsection();
     if (!(newton_tolerance > 0))
       throw InputError("",
@@ -620,6 +687,15 @@ namespace RestShape
                       "on curved obstacles, where the set otherwise wanders "
                       "(the brain).");
     prm.declare_entry(
+      "Maximum outside fraction",
+      "0.05",
+      Patterns::Double(0, 1),
+      "Largest fraction of the contact candidates (boundary nodes of the "
+      "contact labels) that may lie on the wrong side of the obstacle in "
+      "the mesh geometry; more stops the run before solving (a misplaced "
+      "obstacle, or one in other units). Raise it for an obstacle that is "
+      "meant to cut into the body, such as a segmented skull.");
+    prm.declare_entry(
       "Crease plane changes",
       "6",
       Patterns::Integer(0),
@@ -645,9 +721,10 @@ namespace RestShape
     inside = prm.get("Side") == "inside";
     labels =
       parse_label_set(prm.get("Contact labels"), "Contact/Contact labels");
-    active_set_constant = prm.get_double("Active set constant");
-    free_updates        = prm.get_integer("Free active-set updates");
-    plane_changes       = prm.get_integer("Crease plane changes");
+    active_set_constant  = prm.get_double("Active set constant");
+    free_updates         = prm.get_integer("Free active-set updates");
+    plane_changes        = prm.get_integer("Crease plane changes");
+    max_outside_fraction = prm.get_double("Maximum outside fraction");
     prm.leave_subsection();
     if (!(active_set_constant > 0))
       throw InputError("",
@@ -780,6 +857,8 @@ namespace RestShape
     contact.parse_parameters(prm);
     inverse.parse_parameters(prm);
     prestress_comparison.parse_parameters(prm);
+    // The fluid level is given in the mesh's length unit.
+    loads.fluid_level *= mesh.length_unit;
     if (prestress_comparison.enabled && !inverse.enabled)
       throw InputError("",
                        "Prestress comparison/Enabled",

@@ -20,8 +20,6 @@ namespace RestShape
   ContactProblem::ContactProblem(const ContactParameters &parameters,
                                  const ForwardProblem    &forward,
                                  TimerOutput             &timer)
-    // Gaps are resolved as tightly as the residual (relative to the body's
-    // size), but never tighter than 1e-10 of it.
     : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) *
                     forward.mesh().diameter())
     , parameters(parameters)
@@ -241,9 +239,7 @@ namespace RestShape
     history.clear();
     releases_frozen = false;
     n_added = n_released = 0;
-    n_updates = n_thaws   = 0;
-    n_grazing_pulling     = 0;
-    grazing_pull_fraction = 0;
+    n_updates = n_thaws = 0;
     for (Candidate &c : candidates)
       {
         const Point<3> x    = position(c, d);
@@ -550,10 +546,9 @@ namespace RestShape
     // pulling planes of crease nodes (the rest of the set stays, releases
     // stay frozen). A node released before that came back through the
     // obstacle (grazing) pulls when held and penetrates when free:
-    // releasing it again would only repeat that; it is held and its pull
-    // accepted and reported.
-    double                    push = 0, pull = 0, grazing_pull = 0;
-    unsigned int              n_grazing = 0;
+    // releasing it again here would only repeat that; it is held, and the
+    // strict check of the converged state decides (enforce_conditions()).
+    double                    push = 0, pull = 0;
     std::vector<unsigned int> pulling;
     std::vector<double>       lambda;
     for (unsigned int i = 0; i < candidates.size(); ++i)
@@ -562,14 +557,7 @@ namespace RestShape
           Candidate &c = candidates[i];
           if (c.grazing)
             {
-              const double force = contact_force(c, raw_residual);
-              if (force < 0)
-                {
-                  grazing_pull -= force;
-                  ++n_grazing;
-                }
-              else
-                push += force;
+              push += std::max(0., contact_force(c, raw_residual));
               continue;
             }
           if (c.held.size() > 1)
@@ -600,12 +588,9 @@ namespace RestShape
           else
             push += force;
         }
-    const MPI_Comm comm   = communicator();
-    push                  = Utilities::MPI::sum(push, comm);
-    pull                  = Utilities::MPI::sum(pull, comm);
-    n_grazing_pulling     = Utilities::MPI::sum(n_grazing, comm);
-    grazing_pull_fraction = Utilities::MPI::sum(grazing_pull, comm) /
-                            std::max(push, std::numeric_limits<double>::min());
+    const MPI_Comm comm = communicator();
+    push                = Utilities::MPI::sum(push, comm);
+    pull                = Utilities::MPI::sum(pull, comm);
     if (pull <= 1e-3 * push)
       {
         for (Candidate &c : candidates)

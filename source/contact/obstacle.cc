@@ -225,4 +225,12 @@ namespace RestShape
   {
     return data->mesh.number_of_faces();
   }
+
+  std::pair<dealii::Point<3>, dealii::Point<3>>
+  Obstacle::bounding_box() const
+  {
+    const auto box = data->tree->bbox();
+    return {dealii::Point<3>(box.xmin(), box.ymin(), box.zmin()),
+            dealii::Point<3>(box.xmax(), box.ymax(), box.zmax())};
+  }
 } // namespace RestShape

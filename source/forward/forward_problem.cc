@@ -147,13 +147,128 @@ namespace RestShape
     };
     pressure_labels = labels_or_unfixed(parameters.loads.pressure_labels);
     support_labels  = labels_or_unfixed(parameters.boundary.support_labels);
+    setup_surface_load();
 
     linear_solver =
       std::make_unique<LinearSolver>(parameters.solver,
                                      parameters.discretization.degree,
                                      &timer);
+    linear_solver->set_symmetric(symmetric_tangent);
     if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
+  }
+
+  void
+  ForwardProblem::setup_surface_load()
+  {
+    const LoadParameters &loads = parameters.loads;
+    // The pressure faces' quadrature points (mesh geometry) and their
+    // heights against gravity.
+    const Tensor<1, 3>    up      = -loads.gravity;
+    double                highest = -std::numeric_limits<double>::max();
+    Point<3>              top;
+    std::vector<Point<3>> points;
+    FEFaceValues<3>       fv(*mapping_,
+                       fe_,
+                       face_quadrature_,
+                       update_quadrature_points);
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          pressure_labels.count(cell->material_id()))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              fv.reinit(cell, f);
+              for (const Point<3> &x : fv.get_quadrature_points())
+                {
+                  points.push_back(x);
+                  if (up * x > highest)
+                    {
+                      highest = up * x;
+                      top     = x;
+                    }
+                }
+            }
+    // The highest point over all ranks.
+    const std::vector<double> mine = {highest, top[0], top[1], top[2]};
+    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+      if (r[0] > highest)
+        {
+          highest = r[0];
+          top     = Point<3>(r[1], r[2], r[3]);
+        }
+    const Point<3> level = loads.has_fluid_level ? loads.fluid_level : top;
+    surface_load_        = std::make_unique<SurfaceLoad>(loads, level);
+
+    if (loads.hydrostatic && loads.has_fluid_level && up.norm() > 0)
+      {
+        // The deepest pressure-face point below the level (m; < 0: above).
+        double deepest = -std::numeric_limits<double>::max();
+        for (const Point<3> &x : points)
+          deepest = std::max(deepest, -(up * (x - level)) / up.norm());
+        deepest = Utilities::MPI::max(deepest, comm);
+        if (!(deepest > 0))
+          throw InputError(
+            "",
+            "Loads/Fluid level",
+            "no pressure face lies below the fluid level (the lowest face "
+            "point is " +
+              number_text(-deepest / parameters.mesh.length_unit) +
+              " mesh units above it): the fluid wets nothing; expected a "
+              "level above some of the pressure faces");
+      }
+    const bool pressure_acts =
+      loads.pressure != 0 || (loads.hydrostatic && loads.gravity.norm() > 0);
+    symmetric_tangent = !(loads.follower && pressure_acts) ||
+                        pressure_surface_is_closed_or_held();
+  }
+
+  bool
+  ForwardProblem::pressure_surface_is_closed_or_held() const
+  {
+    // Edges (vertex pairs) of the pressure faces of owned and ghost cells,
+    // with the number of pressure faces that share them: an edge of only
+    // one is an edge of the loaded surface.
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> count;
+    const auto key = [](const auto &line) {
+      const unsigned int a = line->vertex_index(0), b = line->vertex_index(1);
+      return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (!cell->is_artificial() && pressure_labels.count(cell->material_id()))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+              ++count[key(cell->face(f)->line(l))];
+    bool                                 held = true;
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          pressure_labels.count(cell->material_id()))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+              {
+                const auto line = cell->face(f)->line(l);
+                if (count[key(line)] != 1)
+                  continue;
+                dofs.resize(fe_.n_dofs_per_line() +
+                            2 * fe_.n_dofs_per_vertex());
+                line->get_dof_indices(dofs);
+                for (const auto dof : dofs)
+                  held = held && is_fixed(dof);
+              }
+    return Utilities::MPI::min(held ? 1 : 0, comm) == 1;
+  }
+
+  double
+  ForwardProblem::effective_density(const CellAccessor<3, 3> &cell) const
+  {
+    const Label label = cell.material_id();
+    return labelled_mesh.mass_ratio(cell) *
+           (material_table.density(label) - (parameters.loads.hydrostatic ?
+                                               0. :
+                                               parameters.loads.fluid_density));
   }
 
   void
@@ -400,6 +515,64 @@ namespace RestShape
     return {Utilities::MPI::sum(sum, comm) / n, Utilities::MPI::max(max, comm)};
   }
 
+  std::pair<double, double>
+  ForwardProblem::distance_to(const std::vector<Point<3>> &targets) const
+  {
+    std::vector<bool> seen(targets.size(), false);
+    double            sum = 0, max = 0, n = 0;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int i = cell->vertex_index(v);
+            if (i >= targets.size() || seen[i] ||
+                !owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
+              continue;
+            seen[i]    = true;
+            Point<3> x = cell->vertex(v);
+            for (unsigned int c = 0; c < 3; ++c)
+              x[c] += d_ghost[cell->vertex_dof_index(v, c)];
+            const double e = x.distance(targets[i]);
+            sum += e;
+            max = std::max(max, e);
+            n += 1;
+          }
+    n = Utilities::MPI::sum(n, comm);
+    return {n > 0 ? Utilities::MPI::sum(sum, comm) / n : 0.,
+            Utilities::MPI::max(max, comm)};
+  }
+
+  std::vector<double>
+  ForwardProblem::image_mass_ratios() const
+  {
+    std::vector<double>  ratios(labelled_mesh.triangulation().n_active_cells(),
+                               0.);
+    FEValues<3>          fe_values(*mapping_,
+                          fe_,
+                          cell_quadrature,
+                          update_gradients | update_JxW_values);
+    std::vector<Tensor2> grad_w(cell_quadrature.size());
+    const FEValuesExtractors::Vector u(0);
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_gradients(w_ghost, grad_w);
+          double mesh_volume = 0, rest_volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              mesh_volume += fe_values.JxW(q);
+              rest_volume +=
+                determinant(Tensor2(unit_symmetric_tensor<3>()) + grad_w[q]) *
+                fe_values.JxW(q);
+            }
+          ratios[cell->active_cell_index()] =
+            labelled_mesh.mass_ratio(*cell) * mesh_volume / rest_volume;
+        }
+    Utilities::MPI::sum(ratios, comm, ratios);
+    return ratios;
+  }
+
   Vector<float>
   ForwardProblem::von_mises_stress() const
   {
@@ -464,10 +637,12 @@ namespace RestShape
         FEFaceValues<3>                  ffv(*mapping_,
                             fe_,
                             face_quadrature_,
-                            update_values | update_JxW_values);
+                            update_values | update_gradients |
+                              update_normal_vectors | update_JxW_values);
         const FEValuesExtractors::Vector u(0);
         std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size()),
           face_w(face_quadrature_.size());
+        std::vector<Tensor2> grad_w(face_quadrature_.size());
         for (const auto &cell : dof_handler_.active_cell_iterators())
           if (cell->is_locally_owned() &&
               support_labels.count(cell->material_id()))
@@ -477,8 +652,11 @@ namespace RestShape
                   ffv.reinit(cell, f);
                   ffv[u].get_function_values(d_ghost, face_d);
                   ffv[u].get_function_values(w_ghost, face_w);
+                  ffv[u].get_function_gradients(w_ghost, grad_w);
                   for (const unsigned int q : ffv.quadrature_point_indices())
-                    force -= k * (face_d[q] - face_w[q]) * ffv.JxW(q);
+                    force -= k * (face_d[q] - face_w[q]) *
+                             rest_area(grad_w[q], ffv.normal_vector(q)) *
+                             ffv.JxW(q);
                 }
       }
     for (unsigned int c = 0; c < 3; ++c)
@@ -489,12 +667,8 @@ namespace RestShape
   Tensor<1, 3>
   ForwardProblem::total_external_force(const LoadState &load) const
   {
-    Tensor<1, 3>    force;
-    FEValues<3>     fv(*mapping_, fe_, cell_quadrature, update_JxW_values);
-    FEFaceValues<3> ffv(*mapping_,
-                        fe_,
-                        face_quadrature_,
-                        update_normal_vectors | update_JxW_values);
+    Tensor<1, 3> force;
+    FEValues<3>  fv(*mapping_, fe_, cell_quadrature, update_JxW_values);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -502,21 +676,66 @@ namespace RestShape
           double volume = 0;
           for (const unsigned int q : fv.quadrature_point_indices())
             volume += fv.JxW(q);
-          force += (material_table.density(cell->material_id()) -
-                    parameters.loads.fluid_density) *
-                   volume * load.acceleration;
-          if (load.pressure != 0 && pressure_labels.count(cell->material_id()))
+          force += effective_density(*cell) * volume * load.acceleration;
+        }
+    for (unsigned int c = 0; c < 3; ++c)
+      force[c] = Utilities::MPI::sum(force[c], comm);
+    return force + surface_force(load);
+  }
+
+  Tensor<1, 3>
+  ForwardProblem::surface_force(const LoadState &load) const
+  {
+    Tensor<1, 3> force;
+    if (surface_load_->acts(load))
+      {
+        const bool                       follower = surface_load_->follower();
+        FEFaceValues<3>                  ffv(*mapping_,
+                            fe_,
+                            face_quadrature_,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_normal_vectors |
+                              update_JxW_values);
+        const FEValuesExtractors::Vector u(0);
+        std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size());
+        std::vector<Tensor2>             grad_d(face_quadrature_.size());
+        const Tensor2                    I = unit_symmetric_tensor<3>();
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              pressure_labels.count(cell->material_id()))
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary())
                 {
                   ffv.reinit(cell, f);
+                  ffv[u].get_function_values(d_ghost, face_d);
+                  ffv[u].get_function_gradients(d_ghost, grad_d);
                   for (const unsigned int q : ffv.quadrature_point_indices())
-                    force -= load.pressure * ffv.normal_vector(q) * ffv.JxW(q);
+                    {
+                      const Point<3>     &X = ffv.quadrature_point(q);
+                      const Tensor<1, 3> &N = ffv.normal_vector(q);
+                      force -=
+                        follower ?
+                          surface_load_->pressure(load, X + face_d[q]) *
+                            cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
+                          surface_load_->pressure(load, X) * N * ffv.JxW(q);
+                    }
                 }
-        }
+      }
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);
     return force;
+  }
+
+  const SurfaceLoad &
+  ForwardProblem::surface_load() const
+  {
+    return *surface_load_;
+  }
+
+  bool
+  ForwardProblem::tangent_is_symmetric() const
+  {
+    return symmetric_tangent;
   }
 
   const MatrixType &

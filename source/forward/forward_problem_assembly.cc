@@ -28,12 +28,16 @@ namespace RestShape
       , fe_face_values(mapping,
                        fe,
                        face_quadrature,
-                       update_values | update_normal_vectors |
+                       update_values | update_gradients |
+                         update_quadrature_points | update_normal_vectors |
                          update_JxW_values)
       , grad_d(quadrature.size())
       , grad_w(quadrature.size())
       , face_d(face_quadrature.size())
       , face_w(face_quadrature.size())
+      , face_grad_d(face_quadrature.size())
+      , face_grad_w(face_quadrature.size())
+      , face_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
       , b(fe.n_dofs_per_cell())
       , v(fe.n_dofs_per_cell())
     {}
@@ -49,6 +53,8 @@ namespace RestShape
     FEFaceValues<3>           fe_face_values;
     std::vector<Tensor2>      grad_d, grad_w;
     std::vector<Tensor<1, 3>> face_d, face_w;
+    std::vector<Tensor2>      face_grad_d, face_grad_w;
+    FullMatrix<double>        face_matrix; // follower pressure, one cell
     std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
     std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
   };
@@ -102,8 +108,7 @@ namespace RestShape
     // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
     // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
     const Tensor<1, 3> body_force =
-      (material_table.density(label) - parameters.loads.fluid_density) *
-      current_load.acceleration;
+      effective_density(*cell) * current_load.acceleration;
     const Tensor2 I = unit_symmetric_tensor<3>();
 
     Tensor2 P;
@@ -165,31 +170,20 @@ namespace RestShape
         for (unsigned int j = i + 1; j < n_dofs; ++j)
           copy.cell_matrix(i, j) = copy.cell_matrix(j, i);
 
-    // CSF pressure: a dead load -p n on the outer faces of the mesh.
-    if (current_load.pressure != 0 && pressure_labels.count(label))
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            FEFaceValues<3> &fv = scratch.fe_face_values;
-            fv.reinit(cell, f);
-            for (const unsigned int q : fv.quadrature_point_indices())
-              {
-                const Tensor<1, 3> traction =
-                  -current_load.pressure * fv.normal_vector(q);
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const double f_ext =
-                      fv.shape_value(i, q) *
-                      traction[fe_.system_to_component_index(i).first] *
-                      fv.JxW(q);
-                    copy.cell_external(i) += f_ext;
-                    copy.cell_rhs(i) += f_ext;
-                  }
-              }
-          }
+    // Dead loads (gravity, a dead pressure): their potential is
+    // -f_ext . (d - w), the work done from the rest shape. A follower
+    // pressure adds its own potential.
+    if (!surface_load_->follower())
+      assemble_pressure(cell, scratch, copy, matrix);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      copy.energy -= copy.cell_external(i) *
+                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
+    if (surface_load_->follower())
+      assemble_pressure(cell, scratch, copy, matrix);
 
-    // Elastic support: traction -k (d - w) on the outer faces (mesh
-    // geometry), energy k/2 |d - w|^2.
+    // Elastic support: traction -k (d - w) per unit area of the rest
+    // shape's faces (the tethers belong to the tissue; the same whichever
+    // geometry is the mesh), energy k/2 |d - w|^2.
     const double k = parameters.boundary.support_stiffness;
     if (k > 0 && support_labels.count(label))
       for (const unsigned int f : cell->face_indices())
@@ -199,11 +193,14 @@ namespace RestShape
             fv.reinit(cell, f);
             fv[u].get_function_values(d_buffer, scratch.face_d);
             fv[u].get_function_values(w_buffer, scratch.face_w);
+            fv[u].get_function_gradients(w_buffer, scratch.face_grad_w);
             for (const unsigned int q : fv.quadrature_point_indices())
               {
                 const Tensor<1, 3> u_rest =
                   scratch.face_d[q] - scratch.face_w[q];
-                const double JxW = fv.JxW(q);
+                const double JxW =
+                  rest_area(scratch.face_grad_w[q], fv.normal_vector(q)) *
+                  fv.JxW(q);
                 copy.energy += 0.5 * k * u_rest.norm_square() * JxW;
                 for (unsigned int i = 0; i < n_dofs; ++i)
                   {
@@ -219,12 +216,104 @@ namespace RestShape
                   }
               }
           }
+  }
 
-    // Dead loads: their potential is -f_ext . (d - w), the work done from
-    // the rest shape (f_ext does not depend on d or w).
+  void
+  ForwardProblem::assemble_pressure(
+    const typename DoFHandler<3>::active_cell_iterator &cell,
+    ScratchData                                        &scratch,
+    CopyData                                           &copy,
+    const bool                                          matrix) const
+  {
+    if (!surface_load_->acts(current_load) ||
+        !pressure_labels.count(cell->material_id()))
+      return;
+    const SurfaceLoad               &load     = *surface_load_;
+    const bool                       follower = load.follower();
+    const unsigned int               n_dofs   = fe_.n_dofs_per_cell();
+    const FEValuesExtractors::Vector u(0);
+    const Tensor2                    I        = unit_symmetric_tensor<3>();
+    FEFaceValues<3>                 &fv       = scratch.fe_face_values;
+    FullMatrix<double>              &K        = scratch.face_matrix;
+    bool                             any_face = false;
+    if (matrix && follower)
+      K = 0;
+    for (const unsigned int f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary())
+          continue;
+        any_face = true;
+        fv.reinit(cell, f);
+        if (follower)
+          {
+            fv[u].get_function_values(d_buffer, scratch.face_d);
+            fv[u].get_function_values(w_buffer, scratch.face_w);
+            fv[u].get_function_gradients(d_buffer, scratch.face_grad_d);
+            fv[u].get_function_gradients(w_buffer, scratch.face_grad_w);
+          }
+        for (const unsigned int q : fv.quadrature_point_indices())
+          {
+            const Point<3>     &X  = fv.quadrature_point(q);
+            const Tensor<1, 3> &N  = fv.normal_vector(q);
+            const double        dA = fv.JxW(q);
+            if (!follower)
+              {
+                // Dead: -p(X) N dA on the face of the mesh geometry.
+                const Tensor<1, 3> t = -load.pressure(current_load, X) * N;
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    const double f_ext =
+                      fv.shape_value(i, q) *
+                      t[fe_.system_to_component_index(i).first] * dA;
+                    copy.cell_external(i) += f_ext;
+                    copy.cell_rhs(i) += f_ext;
+                  }
+                continue;
+              }
+            // Follower: -p(x) cof(F) N dA on the current face, x = X + d.
+            const Tensor2      F = I + scratch.face_grad_d[q];
+            const Point<3>     x = X + scratch.face_d[q];
+            const double       p = load.pressure(current_load, x);
+            const Tensor<1, 3> a = cofactor_times(F, N) * dA;
+            // Potential from the rest shape: Q . a now, less at X + w.
+            const Tensor2 G = I + scratch.face_grad_w[q];
+            copy.energy +=
+              load.potential_flux(current_load, x) * a -
+              load.potential_flux(current_load, X + scratch.face_w[q]) *
+                cofactor_times(G, N) * dA;
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const double f_ext = -p * fv.shape_value(i, q) *
+                                     a[fe_.system_to_component_index(i).first];
+                copy.cell_external(i) += f_ext;
+                copy.cell_rhs(i) += f_ext;
+              }
+            if (!matrix)
+              continue;
+            // K_ij = -d f_i / d u_j = phi_i (dp_j a + p da_j)[c_i].
+            const Tensor<1, 3> grad_p = load.pressure_gradient(current_load, x);
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              {
+                const unsigned int cj = fe_.system_to_component_index(j).first;
+                const double       phi_j = fv.shape_value(j, q);
+                const Tensor<1, 3> dt =
+                  grad_p[cj] * phi_j * a +
+                  p * cofactor_derivative(F, N, cj, fv.shape_grad(j, q)) * dA;
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  K(i, j) += fv.shape_value(i, q) *
+                             dt[fe_.system_to_component_index(i).first];
+              }
+          }
+      }
+    if (!(matrix && follower && any_face))
+      return;
+    // Where the load is conservative its assembled tangent is symmetric,
+    // and so is the sum of the faces' symmetric parts: the exact tangent
+    // for the symmetric solvers.
     for (unsigned int i = 0; i < n_dofs; ++i)
-      copy.energy -= copy.cell_external(i) *
-                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
+      for (unsigned int j = 0; j < n_dofs; ++j)
+        copy.cell_matrix(i, j) +=
+          symmetric_tangent ? 0.5 * (K(i, j) + K(j, i)) : K(i, j);
   }
 
   bool

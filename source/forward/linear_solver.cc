@@ -56,6 +56,12 @@ namespace RestShape
     rigid_body_modes = std::move(modes);
   }
 
+  void
+  LinearSolver::set_symmetric(const bool s)
+  {
+    symmetric = s;
+  }
+
   unsigned int
   LinearSolver::solve(const MatrixType &A,
                       VectorType       &x,
@@ -98,8 +104,9 @@ namespace RestShape
         AssertThrow(direct_solver != nullptr,
                     ExcMessage("MUMPS is not available in Amesos"));
         Teuchos::ParameterList list;
-        // The tangent is symmetric (possibly indefinite): LDL^T.
-        list.set("MatrixProperty", "symmetric");
+        // Amesos passes MUMPS the whole matrix with SYM = 0 whatever its
+        // MatrixProperty says (Trilinos bugs 2331/2332): MUMPS factorises
+        // LU, symmetric or not (measured: the same flops either way).
         direct_solver->SetParameters(list);
         auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get());
         mumps->SetICNTL(7, 5);   // METIS ordering
@@ -119,6 +126,17 @@ namespace RestShape
                           std::to_string(status) +
                           "): singular matrix? check that the scene fixes "
                           "every rigid-body motion");
+    direct_solver->Solve();
+  }
+
+  void
+  LinearSolver::solve_factored(VectorType &x, const VectorType &b)
+  {
+    AssertThrow(direct_solver != nullptr,
+                ExcMessage("solve_factored() needs a direct solve first"));
+    direct_problem->SetLHS(&x.trilinos_vector());
+    direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
     direct_solver->Solve();
   }
 
@@ -223,9 +241,19 @@ namespace RestShape
   {
     try
       {
-        SolverCG<VectorType> cg(control);
-        cg.solve(A, x, b, *amg);
-        last_method = "CG+AMG";
+        if (symmetric)
+          {
+            SolverCG<VectorType> cg(control);
+            cg.solve(A, x, b, *amg);
+            last_method = "CG+AMG";
+          }
+        else
+          {
+            SolverGMRES<VectorType> gmres(
+              control, SolverGMRES<VectorType>::AdditionalData(200));
+            gmres.solve(A, x, b, *amg);
+            last_method = "GMRES+AMG";
+          }
         return true;
       }
     catch (const SolverControl::NoConvergence &)

@@ -20,7 +20,107 @@ namespace RestShape
   namespace
   {
     const std::string file_parameter = "Mesh/File";
-  }
+    const std::string target_name    = "target_position";
+    const std::string mass_name      = "image_mass_ratio";
+
+    /// The node data "target_position" and element data "image_mass_ratio"
+    /// of the file open in gmsh (none, or both for every node and cell).
+    void
+    read_rest_shape_data(
+      const std::string                         &file,
+      const std::map<std::size_t, unsigned int> &node_index,
+      const std::map<std::size_t, unsigned int> &cell_of_element,
+      const double                               length_unit,
+      MeshDescription                           &mesh)
+    {
+      std::vector<int> views;
+      gmsh::view::getTags(views);
+      for (const int view : views)
+        {
+          std::string name;
+          gmsh::option::getString("View[" +
+                                    std::to_string(gmsh::view::getIndex(view)) +
+                                    "].Name",
+                                  name);
+          if (name != target_name && name != mass_name)
+            continue;
+          std::string              type;
+          std::vector<std::size_t> tags;
+          std::vector<double>      data;
+          double                   time       = 0;
+          int                      components = 0;
+          gmsh::view::getHomogeneousModelData(
+            view, 0, type, tags, data, time, components);
+          const bool  nodes = (name == target_name);
+          const auto &map   = nodes ? node_index : cell_of_element;
+          if (components != (nodes ? 3 : 1) || tags.size() != map.size())
+            throw InputError(file,
+                             file_parameter,
+                             "its " + name + " data do not cover every " +
+                               (nodes ? "node" : "cell") +
+                               " once; expected a rest_shape.msh as RestShape "
+                               "writes it");
+          if (nodes)
+            mesh.targets.resize(mesh.vertices.size());
+          else
+            mesh.mass_ratios.resize(mesh.cells.size());
+          for (unsigned int k = 0; k < tags.size(); ++k)
+            {
+              const auto it = map.find(tags[k]);
+              if (it == map.end())
+                throw InputError(file,
+                                 file_parameter,
+                                 name + " refers to " +
+                                   std::to_string(tags[k]) +
+                                   ", which is not in the mesh");
+              if (nodes)
+                mesh.targets[it->second] =
+                  Point<3>(data[3 * k], data[3 * k + 1], data[3 * k + 2]) *
+                  length_unit;
+              else if (!(data[k] > 0))
+                throw InputError(file,
+                                 file_parameter,
+                                 name + " of element " +
+                                   std::to_string(tags[k]) + " is " +
+                                   number_text(data[k]) +
+                                   "; expected a positive ratio");
+              else
+                mesh.mass_ratios[it->second] = data[k];
+            }
+        }
+      if (mesh.targets.empty() != mesh.mass_ratios.empty())
+        throw InputError(file,
+                         file_parameter,
+                         "it has " +
+                           (mesh.targets.empty() ? mass_name : target_name) +
+                           " data without " +
+                           (mesh.targets.empty() ? target_name : mass_name) +
+                           "; expected both (a rest_shape.msh) or neither");
+    }
+
+    /// gmsh 2.2 $NodeData/$ElementData of a rest shape.
+    void
+    write_rest_shape_data(std::ostream            &out,
+                          const std::vector<bool> &used,
+                          const RestShapeData     &rest,
+                          const double             length_unit)
+    {
+      out << "$NodeData\n1\n\"" << target_name << "\"\n1\n0\n3\n0\n3\n"
+          << std::count(used.begin(), used.end(), true) << '\n';
+      for (unsigned int v = 0; v < used.size(); ++v)
+        if (used[v])
+          {
+            const Point<3> p = rest.target(v) / length_unit;
+            out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+          }
+      out << "$EndNodeData\n$ElementData\n1\n\"" << mass_name
+          << "\"\n1\n0\n3\n0\n1\n"
+          << rest.mass_ratios.size() << '\n';
+      for (unsigned int c = 0; c < rest.mass_ratios.size(); ++c)
+        out << c + 1 << ' ' << rest.mass_ratios[c] << '\n';
+      out << "$EndElementData\n";
+    }
+  } // namespace
 
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit)
@@ -67,7 +167,8 @@ namespace RestShape
                                          coordinates[3 * n + 2] * length_unit);
           }
 
-        gmsh::vectorpair entities;
+        std::map<std::size_t, unsigned int> cell_of_element;
+        gmsh::vectorpair                    entities;
         gmsh::model::getEntities(entities, 3);
         for (const auto &[dim, entity] : entities)
           {
@@ -116,9 +217,12 @@ namespace RestShape
                       }
                     cell.material_id = label;
                     result.cells.push_back(cell);
+                    cell_of_element[element_tags[t][e]] =
+                      result.cells.size() - 1;
                   }
               }
           }
+        read_rest_shape_data(file, index, cell_of_element, length_unit, result);
       }
     catch (const InputError &)
       {
@@ -174,7 +278,8 @@ namespace RestShape
   write_gmsh(const Triangulation<3>                      &tria,
              const std::function<Point<3>(unsigned int)> &position,
              const double                                 length_unit,
-             const std::string                           &file)
+             const std::string                           &file,
+             const RestShapeData                         *rest)
   {
     std::vector<bool> used(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
@@ -207,6 +312,8 @@ namespace RestShape
             out << '\n';
           }
         out << "$EndElements\n";
+        if (rest != nullptr)
+          write_rest_shape_data(out, used, *rest, length_unit);
       },
       "Output/Directory");
   }

@@ -136,6 +136,10 @@ namespace RestShape
     tria->create_triangulation(description.vertices,
                                description.cells,
                                SubCellData());
+    // Coarse cells keep the order of the description (tetrahedra are
+    // rebuilt from it at every refinement; hexahedra refine in the tree).
+    mass_ratios    = description.mass_ratios;
+    vertex_targets = description.targets;
     if (!is_simplex())
       description = MeshDescription(); // p4est/deal.II refine hexahedra
   }
@@ -235,6 +239,26 @@ namespace RestShape
     for (const auto &[label, n] : counts)
       result.insert(label);
     return result;
+  }
+
+  double
+  LabelledMesh::mass_ratio(const CellAccessor<3, 3> &cell) const
+  {
+    if (mass_ratios.empty())
+      return 1;
+    // Tetrahedra: every cell is a coarse cell; hexahedra: the ancestor's.
+    if (cell.level() == 0)
+      return mass_ratios[cell.index()];
+    auto ancestor = cell.parent();
+    while (ancestor->level() > 0)
+      ancestor = ancestor->parent();
+    return mass_ratios[ancestor->index()];
+  }
+
+  const std::vector<Point<3>> &
+  LabelledMesh::targets() const
+  {
+    return vertex_targets;
   }
 
   std::pair<double, Point<3>>

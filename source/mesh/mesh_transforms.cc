@@ -40,10 +40,12 @@ namespace RestShape
               {
                 new_index[v] = result.vertices.size();
                 result.vertices.push_back(mesh.vertices[v]);
+                if (!mesh.targets.empty())
+                  result.targets.push_back(mesh.targets[v]);
               }
             v = new_index[v];
           }
-        result.cells.push_back(cell);
+        result.add_part(cell, mesh, c);
       }
     return result;
   }
@@ -54,8 +56,8 @@ namespace RestShape
     class EdgeMidpoints
     {
     public:
-      EdgeMidpoints(std::vector<Point<3>> &vertices)
-        : vertices(vertices)
+      EdgeMidpoints(MeshDescription &mesh)
+        : mesh(mesh)
       {}
 
       unsigned int
@@ -65,12 +67,11 @@ namespace RestShape
         const auto                        it = index.find(key);
         if (it != index.end())
           return it->second;
-        vertices.push_back(0.5 * (vertices[a] + vertices[b]));
-        return index[key] = vertices.size() - 1;
+        return index[key] = mesh.add_centroid({a, b});
       }
 
     private:
-      std::vector<Point<3>>                              &vertices;
+      MeshDescription                                    &mesh;
       std::map<std::array<unsigned int, 2>, unsigned int> index;
     };
 
@@ -97,10 +98,12 @@ namespace RestShape
   {
     MeshDescription fine;
     fine.vertices = tets.vertices;
-    EdgeMidpoints midpoint(fine.vertices);
-    for (const auto &tet : tets.cells)
+    fine.targets  = tets.targets;
+    EdgeMidpoints midpoint(fine);
+    for (unsigned int c = 0; c < tets.cells.size(); ++c)
       {
-        const auto &t = tet.vertices;
+        const auto &tet = tets.cells[c];
+        const auto &t   = tet.vertices;
         // m[i][j]: midpoint of edge (i, j).
         unsigned int m[4][4];
         for (unsigned int i = 0; i < 4; ++i)
@@ -112,7 +115,7 @@ namespace RestShape
             std::array<unsigned int, 4> corner;
             for (unsigned int j = 0; j < 4; ++j)
               corner[j] = (i == j) ? t[i] : m[i][j];
-            fine.cells.push_back(oriented_tet(v, corner, tet.material_id));
+            fine.add_part(oriented_tet(v, corner, tet.material_id), tets, c);
           }
         // The octahedron: diagonals join midpoints of opposite edges
         // (x y)-(z w); the equator around (x y)-(z w) is xz, xw, yw, yz.
@@ -135,10 +138,12 @@ namespace RestShape
         const unsigned int x = d[0], y = d[1], z = d[2], w = d[3];
         const unsigned int equator[4] = {m[x][z], m[x][w], m[y][w], m[y][z]};
         for (unsigned int e = 0; e < 4; ++e)
-          fine.cells.push_back(
+          fine.add_part(
             oriented_tet(v,
                          {{m[x][y], m[z][w], equator[e], equator[(e + 1) % 4]}},
-                         tet.material_id));
+                         tet.material_id),
+            tets,
+            c);
       }
     return fine;
   }
@@ -154,10 +159,10 @@ namespace RestShape
     std::map<std::array<unsigned int, 2>, unsigned int> edge_vertex;
     std::map<std::array<unsigned int, 3>, unsigned int> face_vertex;
     hexes.vertices = tets.vertices;
+    hexes.targets  = tets.targets;
 
     const auto new_vertex = [&](const std::vector<unsigned int> &of) {
-      hexes.vertices.push_back(centroid(tets.vertices, of));
-      return static_cast<unsigned int>(hexes.vertices.size() - 1);
+      return hexes.add_centroid(of);
     };
     const auto edge = [&](unsigned int a, unsigned int b) {
       std::array<unsigned int, 2> key{{std::min(a, b), std::max(a, b)}};
@@ -175,8 +180,9 @@ namespace RestShape
       return face_vertex[key] = new_vertex({a, b, c});
     };
 
-    for (const auto &tet : tets.cells)
+    for (unsigned int c = 0; c < tets.cells.size(); ++c)
       {
+        const auto        &tet    = tets.cells[c];
         const auto        &t      = tet.vertices;
         const unsigned int center = new_vertex(t);
         for (unsigned int i = 0; i < 4; ++i)
@@ -201,7 +207,7 @@ namespace RestShape
                                face(t[i], o[1], o[2]),
                                center};
             hex.material_id = tet.material_id;
-            hexes.cells.push_back(hex);
+            hexes.add_part(hex, tets, c);
           }
       }
     return hexes;

@@ -6,13 +6,15 @@
 // crease where two faces meet at about 12 degrees, and the dome presses
 // into them. Nodes in a crease hold both faces' planes; before they did,
 // the closest face alternated, the normal was fixed to a smoothed one and
-// the gaps converged linearly. Checks: the solve converges, some nodes hold
-// crease planes, no node is through the bowl and every active node is on
-// it (or on its fixed planes, at most 0.05 mm off the bowl), fixing the
-// planes at their first change fixes more nodes but not the sag, no active
-// node pulls with more than the accepted 0.1 % of the contact force, and the
-// forces balance (weight = contact force + reaction at the
-// fixed top, each component, relative to the weight).
+// the gaps converged linearly. Held and fixed planes help Newton on the
+// way; the converged state must meet the contact conditions against the
+// bowl itself (the strict check releases planes a node has left, so the
+// final state may hold none). Checks: the solve converges, the strict
+// contact conditions hold (no node through the bowl, every active node on
+// it and pushing), fixing the planes at their first change does not change
+// the sag, no active node pulls with more than 0.1 % of the contact force,
+// and the forces balance (weight = contact force + reaction at the fixed
+// top, each component, relative to the weight).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/contact/contact.h>
@@ -118,8 +120,7 @@ main(int argc, char **argv)
   // The default, and the planes fixed at their first change (Contact/
   // Crease plane changes = 0): the fixed planes are exact linear
   // constraints; the nodes on them may end slightly off the bowl.
-  double       sag[2];
-  unsigned int fixed_nodes[2];
+  double sag[2];
   for (const unsigned int changes : {6u, 0u})
     {
       Scene                 s("subsection Mesh\n set File = " + mesh_file +
@@ -156,14 +157,19 @@ main(int argc, char **argv)
                 << " on fixed planes (up to " << distance * 1e3
                 << " mm off the bowl), " << stats.newton_iterations
                 << " Newton iterations, " << stats.load_steps
-                << " load steps, sag " << sag[changes == 0] * 1e3 << " mm"
+                << " load steps, sag " << sag[changes == 0] * 1e3
+                << " mm, energy " << s.forward->potential_energy() << " J"
                 << (stats.converged ? "" : ": " + stats.failure) << std::endl;
       check_between("converged" + tag, stats.converged, 1, 1);
-      check_between("nodes holding crease planes (at least 5)" + tag,
-                    contact.n_held(),
-                    5,
-                    1e9);
-      fixed_nodes[changes == 0] = n_fixed;
+      const ContactConditions conditions =
+        contact.check_conditions(s.forward->displacement(),
+                                 s.forward->raw_residual(),
+                                 1e-8 * weight.norm());
+      std::cout << "  " << conditions.text() << std::endl;
+      check_between("strict contact conditions hold" + tag,
+                    conditions.satisfied(),
+                    1,
+                    1);
       check_below("distance of fixed-plane nodes off the bowl (mm)" + tag,
                   distance * 1e3,
                   0.05);
@@ -186,13 +192,6 @@ main(int argc, char **argv)
     }
   std::filesystem::remove(mesh_file);
   std::filesystem::remove(bowl_file);
-  // Fixed at once, every crease node is on fixed planes; by default only
-  // those in creases of nearly parallel faces (within 10 degrees).
-  check_between("more nodes on fixed planes with Crease plane changes = 0 "
-                "(at least 5 more)",
-                double(fixed_nodes[1]) - fixed_nodes[0],
-                5,
-                1e9);
   check_below("relative change of the sag with fixed planes",
               std::abs(sag[1] - sag[0]) / sag[0],
               1e-3);

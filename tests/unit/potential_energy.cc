@@ -1,8 +1,9 @@
 // The total potential energy reported with every solve (summary.json
 // potential_energy_J, convergence.csv): strain energy + elastic support -
-// work of the dead loads. Checked on the soft cantilever (100 x 10 x 10 mm,
-// E = 100 kPa) bending under gravity (tip 60+ mm down), with CSF pressure
-// and an elastic support:
+// work of the dead loads + the potential of the follower pressure. Checked
+// on the soft cantilever (100 x 10 x 10 mm, E = 100 kPa) bending under
+// gravity (tip 50+ mm down), with a follower CSF pressure on its free part
+// (held at its edges by the clamp: conservative) and an elastic support:
 // - equilibrium is a stationary point: the directional derivative of the
 //   energy at the P2 solution (central differences along the solution and
 //   along a smooth field) is below 1e-6 of its value at the unloaded state;
@@ -123,7 +124,7 @@ namespace
                     std::abs(at_solution) / std::abs(at_zero),
                     1e-6);
       }
-    check_between(name + ": a large-rotation case (tip, mm)", tip_mm, 60, 100);
+    check_between(name + ": a large-rotation case (tip, mm)", tip_mm, 50, 100);
     // Newton descends from the unloaded state, whose energy is zero.
     check_below(name + ": energy at the solution (J)", reported, -1e-4);
   }

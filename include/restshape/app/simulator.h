@@ -52,6 +52,14 @@ namespace RestShape
     check_scene() const;
     void
     setup_problems();
+    /// ContactProblem::check_placement(), on the target of a rest shape
+    /// that carries one (rest_shape.msh).
+    void
+    check_obstacle_placement() const;
+    /// The body's size, mass and the strains its loads impose, with
+    /// warnings (LoadScales).
+    void
+    report_load_scales() const;
     VectorType
     initial_rest_shape() const;
     void
@@ -70,6 +78,20 @@ namespace RestShape
     solve_inverse(const unsigned int cycle,
                   const VectorType  &initial_rest,
                   const VectorType  *guess);
+    /// rest_shape.msh: the rest shape (vertices only: the edge nodes of
+    /// quadratic elements are not in a linear mesh file), with the target
+    /// and the image's masses it carries (gmsh_io.h).
+    void
+    write_rest_shape() const;
+    /// With Solver/Check stability: the stability of the current
+    /// equilibrium into summary.json and on screen; "" if stable, else
+    /// the instability with its mode.
+    std::string
+    stability_text();
+    /// With Solver/Check stability: stop (summary.json, SolverFailure) if
+    /// the equilibrium of the cycle is unstable.
+    void
+    check_stability_of_equilibrium(const SolveStatistics &stats);
     void
     compare_prestress();
     void

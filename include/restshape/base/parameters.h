@@ -7,6 +7,7 @@
 #define restshape_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <restshape/base/label_values.h>
@@ -102,10 +103,16 @@ namespace RestShape
 
   struct LoadParameters
   {
-    dealii::Tensor<1, 3> gravity;    // m/s^2
-    double               pressure;   // Pa, positive pushes inward
-    double fluid_density = 0;        // kg/m^3 of an immersing fluid (buoyancy)
-    std::set<Label> pressure_labels; // empty: all unfixed labels
+    dealii::Tensor<1, 3> gravity;  // m/s^2
+    double               pressure; // Pa, positive pushes inward
+    bool   follower      = true;   // the pressure acts on the current surface
+    double fluid_density = 0;      // kg/m^3 of an immersing fluid
+    /// The fluid acts as hydrostatic pressure on the pressure faces (else:
+    /// as buoyancy, a reduced density).
+    bool             hydrostatic     = false;
+    bool             has_fluid_level = false;
+    dealii::Point<3> fluid_level;     // m, on the free surface
+    std::set<Label>  pressure_labels; // empty: all unfixed labels
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -126,6 +133,7 @@ namespace RestShape
     double       tangent_shift; // relative; 0: off
     unsigned int max_load_step_halvings;
     unsigned int initial_load_steps;
+    bool         check_stability = false; // smallest eigenvalues at the end
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -191,6 +199,7 @@ namespace RestShape
     double          active_set_constant;
     unsigned int    free_updates  = 10;
     unsigned int    plane_changes = 6; // then a crease node's planes are fixed
+    double max_outside_fraction   = 0.05; // of the candidates, before solving
 
     bool
     enabled() const

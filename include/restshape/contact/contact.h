@@ -7,6 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <restshape/base/parameters.h>
+#include <restshape/contact/contact_conditions.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/forward/forward_problem.h>
 
@@ -51,6 +52,20 @@ namespace RestShape
     /// Find candidate nodes and their areas (after ForwardProblem::setup()).
     void
     setup();
+
+    /**
+     * Check, before solving, that the obstacle is where the body is: throws
+     * InputError (Contact/Obstacle file) with the counts and both bounding
+     * boxes if more than Contact/Maximum outside fraction of the candidates
+     * lie on the wrong side in the mesh geometry, or if every candidate is
+     * farther from the obstacle than the body's size (no contact can occur:
+     * an obstacle elsewhere, or in other units). @p shift (owned, m), if
+     * given, moves the candidates first: from a rest shape that carries
+     * its target to that target, which the obstacle must hold (a rest
+     * shape may cross it).
+     */
+    void
+    check_placement(const VectorType *shift = nullptr) const;
 
     /// A new solve starts from displacement @p d (ghosted).
     void
@@ -99,25 +114,43 @@ namespace RestShape
      * more than 0.1 % of the total contact force, exactly those are released
      * (they come back only if they go through the obstacle) and true is
      * returned (Newton goes on); at most five times per solve. Nodes that
-     * came back (grazing) are held: their pull is accepted and reported
-     * (grazing_pull()).
+     * came back (grazing) are held here; the strict check of the converged
+     * state (check_conditions(), enforce_conditions()) releases them if
+     * they pull beyond its tolerance.
      */
     bool
     thaw_if_adhesive(const VectorType &raw_residual);
-
-    /// At the last thaw_if_adhesive(): the number of grazing nodes that
-    /// pulled (held all the same) and their pull over the total contact
-    /// force.
-    std::pair<unsigned int, double>
-    grazing_pull() const
-    {
-      return {n_grazing_pulling, grazing_pull_fraction};
-    }
 
     /// No eligible node beyond the obstacle and every active node on it
     /// (within g_tol) at the state of the last update.
     bool
     is_satisfied() const;
+
+    /**
+     * The contact conditions at the displacement @p d (ghosted) with the
+     * raw residual @p raw_residual of that state, against the obstacle's
+     * surface (ContactConditions). A pull counts if the node's force (or a
+     * held plane's) is below -@p force_tolerance (N).
+     */
+    ContactConditions
+    check_conditions(const VectorType &d,
+                     const VectorType &raw_residual,
+                     const double      force_tolerance) const;
+
+    /**
+     * After a Newton solve converged with the conditions @p violated (the
+     * heuristics of update_active_set() and thaw_if_adhesive() accept
+     * small pulls and hold crease nodes on fixed planes): release every
+     * node and held plane that pulls by more than @p force_tolerance
+     * (grazing nodes too: they come back only through the obstacle), let
+     * nodes on fixed planes that left the surface follow it again, and
+     * start a free phase of the active set (Free active-set updates) from
+     * there. Returns whether it changed anything (then Newton goes on).
+     */
+    bool
+    enforce_conditions(const ContactConditions &violated,
+                       const VectorType        &raw_residual,
+                       const double             force_tolerance);
 
     /// Why the contact conditions are not met at the state of the last
     /// update (nodes through the obstacle, active nodes off it, the largest
@@ -187,8 +220,10 @@ namespace RestShape
     unsigned int
     n_outside() const;
 
-    /// Tolerance on gaps (m).
-    double gap_tolerance;
+    /// Tolerance on gaps (m): the Newton tolerance times the body's size
+    /// (gaps are resolved as tightly as the residual), at least 1e-10 of
+    /// the size.
+    const double gap_tolerance;
 
   private:
     /// The plane of an obstacle face: unit normal towards the allowed side,
@@ -315,8 +350,6 @@ namespace RestShape
     double                 h_min           = 0;
     bool                   releases_frozen = false;
     unsigned int           n_updates = 0, n_thaws = 0;
-    unsigned int           n_grazing_pulling     = 0;
-    double                 grazing_pull_fraction = 0;
     unsigned int           n_added = 0, n_released = 0;
   };
 } // namespace RestShape

@@ -46,6 +46,10 @@ namespace RestShape
     unsigned int
     n_triangles() const;
 
+    /// The corners (m) of the obstacle's bounding box.
+    std::pair<dealii::Point<3>, dealii::Point<3>>
+    bounding_box() const;
+
   private:
     struct Data;
     std::unique_ptr<Data> data;

@@ -16,8 +16,11 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <restshape/base/parameters.h>
+#include <restshape/contact/contact_conditions.h>
 #include <restshape/forward/linear_solver.h>
+#include <restshape/forward/load_state.h>
 #include <restshape/forward/material.h>
+#include <restshape/forward/surface_load.h>
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <algorithm>
@@ -28,18 +31,6 @@
 namespace RestShape
 {
   class ContactProblem;
-
-  /**
-   * What loads the body: a body acceleration (gravity plus any extra field,
-   * m/s^2) acting on the mass of the mesh (target) geometry, and the surface
-   * pressure (Pa) on the pressure faces of the mesh geometry. Both are dead
-   * loads; the external load vector is linear in them.
-   */
-  struct LoadState
-  {
-    dealii::Tensor<1, 3> acceleration;
-    double               pressure = 0;
-  };
 
   /// A mesh node: its three displacement DoFs and its mesh position (m).
   struct Node
@@ -215,6 +206,12 @@ namespace RestShape
     is_fixed(const dealii::types::global_dof_index dof) const;
     const LabelledMesh &
     mesh() const;
+    /// The scene's parameters.
+    const Parameters &
+    scene_parameters() const
+    {
+      return parameters;
+    }
     const MaterialTable &
     materials() const;
 
@@ -223,13 +220,39 @@ namespace RestShape
     /// a displacement-like field; m).
     std::pair<double, double>
     nodal_norms(const VectorType &v) const;
+    /// Mean and max over the mesh vertices with a target of the distance
+    /// (m) between the current position X + d and @p targets (indexed by
+    /// triangulation vertex; vertices beyond its size are skipped).
+    std::pair<double, double>
+    distance_to(const std::vector<dealii::Point<3>> &targets) const;
+    /**
+     * Per active cell (by active cell index, summed over the ranks): its
+     * mass in the image over its density times its volume in the rest
+     * shape X + w, i.e. the mesh's mass ratio times V_mesh / V_rest. What
+     * a rest_shape.msh carries (LabelledMesh::mass_ratio()).
+     */
+    std::vector<double>
+    image_mass_ratios() const;
     /// Element-averaged von Mises Cauchy stress (Pa) of the current state,
     /// one value per active cell (zero on cells not owned here).
     dealii::Vector<float>
     von_mises_stress() const;
-    /// Total external force of @p load on the mesh (N), and the weight.
+    /// Total external force of @p load (N): the weight (less the buoyancy
+    /// with Fluid load = buoyancy) plus surface_force().
     dealii::Tensor<1, 3>
     total_external_force(const LoadState &load) const;
+    /// Resultant (N) of the surface pressure of @p load at the current
+    /// state: on the current surface for a follower load, on the mesh's
+    /// faces for a dead one.
+    dealii::Tensor<1, 3>
+    surface_force(const LoadState &load) const;
+    /// The surface pressure, its level and whether it follows the surface.
+    const SurfaceLoad &
+    surface_load() const;
+    /// Whether the tangent is symmetric: false for a follower pressure on a
+    /// surface with free edges (not conservative).
+    bool
+    tangent_is_symmetric() const;
 
     /// Resultant (N) of the elastic support's tractions on the body.
     dealii::Tensor<1, 3>
@@ -258,6 +281,38 @@ namespace RestShape
     bool
     evaluate(const bool with_tangent);
 
+    /// The contact conditions checked at the end of the last Newton solve
+    /// with contact (ContactProblem::check_conditions()).
+    const ContactConditions &
+    contact_conditions() const
+    {
+      return last_conditions;
+    }
+
+    /**
+     * For the stability of the current state: assemble the consistent
+     * tangent (whatever Discretization/Tangent says) with the constraints
+     * of the last Newton step, factorise it and solve K x = b (direct
+     * solver). Then solve_with_tangent() reuses the factorisation.
+     */
+    void
+    factorise_consistent_tangent(VectorType &x, const VectorType &b);
+    /// Solve with the factorisation of factorise_consistent_tangent().
+    void
+    solve_with_tangent(VectorType &x, const VectorType &b);
+    /// The constraints of the last Newton step (fixed DoFs, hanging nodes,
+    /// active contact).
+    const dealii::AffineConstraints<double> &
+    newton_constraints() const
+    {
+      return constraints_newton;
+    }
+    const dealii::Quadrature<3> &
+    quadrature() const
+    {
+      return cell_quadrature;
+    }
+
     /// The tangent of the last evaluate(true) or Newton step.
     const MatrixType &
     tangent_matrix() const;
@@ -281,6 +336,29 @@ namespace RestShape
 
     void
     setup_nodes();
+    /// The surface load, its fluid level (the given one, or the highest
+    /// point of the pressure faces against gravity) and whether the tangent
+    /// is symmetric. Throws InputError if the fluid wets no pressure face.
+    void
+    setup_surface_load();
+    /// Whether the pressure faces form a closed surface or one whose edges
+    /// are held (every DoF on them fixed): then a follower pressure is
+    /// conservative and its assembled tangent symmetric.
+    bool
+    pressure_surface_is_closed_or_held() const;
+    /// The mass density (kg/m^3) on which the body acceleration acts in
+    /// @p cell: reduced by the fluid's with Fluid load = buoyancy, times the
+    /// mesh's mass ratio (LabelledMesh::mass_ratio()).
+    double
+    effective_density(const dealii::CellAccessor<3, 3> &cell) const;
+    /// The surface pressure on the boundary faces of @p cell: dead
+    /// tractions, or the follower load with its tangent and potential.
+    void
+    assemble_pressure(
+      const typename dealii::DoFHandler<3>::active_cell_iterator &cell,
+      ScratchData                                                &scratch,
+      CopyData                                                   &copy,
+      const bool                                                  matrix) const;
     void
     setup_constraints();
     void
@@ -308,6 +386,15 @@ namespace RestShape
     /// Newton for the current target load and rest shape.
     bool
     newton(SolveStatistics &stats);
+    /// At a converged Newton state with contact: whether the contact
+    /// conditions hold against the obstacle (last_conditions); if not,
+    /// enforce them (false; Newton goes on, ++@p corrections) or, when that
+    /// cannot change anything, fail (false, stats.failure set).
+    /// @p reference: the external force norm of the solve.
+    bool
+    contact_conditions_hold(SolveStatistics &stats,
+                            const double     reference,
+                            unsigned int    &corrections);
     /// Scale the tangent's diagonal by (1 + @p mu) (Solver/Tangent shift).
     void
     shift_diagonal(const double mu);
@@ -368,6 +455,10 @@ namespace RestShape
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
     LoadState   current_load;
+
+    ContactConditions            last_conditions;
+    std::unique_ptr<SurfaceLoad> surface_load_;
+    bool                         symmetric_tangent = true;
 
     std::unique_ptr<LinearSolver> linear_solver;
     ContactProblem               *contact = nullptr;

@@ -53,6 +53,11 @@ namespace RestShape
     void
     set_rigid_body_modes(std::vector<std::vector<double>> modes);
 
+    /// Whether the matrices are symmetric (default): the Krylov method is
+    /// then CG, otherwise GMRES.
+    void
+    set_symmetric(const bool symmetric);
+
     /**
      * Solve A x = b. Returns the number of iterations (1 for the direct
      * solver). The iterative solver reduces the residual by
@@ -64,6 +69,14 @@ namespace RestShape
           VectorType       &x,
           const VectorType &b,
           const double      relative_tolerance = 0);
+
+    /**
+     * Solve A x = b with the factorisation of the last direct solve (of
+     * the same matrix A): the direct solver only, for many right-hand
+     * sides.
+     */
+    void
+    solve_factored(VectorType &x, const VectorType &b);
 
     /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG").
     std::string last_method;
@@ -83,8 +96,8 @@ namespace RestShape
     bool
     setup_amg(const MatrixType &A, const bool force_rebuild);
 
-    /// CG with the current AMG under @p control; false (and x = 0) if it
-    /// does not converge.
+    /// CG (GMRES for a non-symmetric matrix) with the current AMG under
+    /// @p control; false (and x = 0) if it does not converge.
     bool
     run_cg(const MatrixType      &A,
            VectorType            &x,
@@ -118,6 +131,7 @@ namespace RestShape
 
     const SolverParameters           parameters;
     const unsigned int               degree;
+    bool                             symmetric = true;
     dealii::TimerOutput             *timer;
     std::vector<std::vector<double>> rigid_body_modes;
   };

@@ -12,21 +12,37 @@ namespace RestShape
   /**
    * Read a gmsh file into a description in metres. Throws InputError naming
    * the file and "Mesh/File" for missing, unreadable or malformed files and
-   * for meshes that are not purely tetrahedral or purely hexahedral.
+   * for meshes that are not purely tetrahedral or purely hexahedral. The
+   * node data "target_position" and the element data "image_mass_ratio" of
+   * a rest_shape.msh (write_gmsh()) become the description's targets and
+   * mass ratios; a file with only part of them is refused.
    */
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit);
 
+  /// What a rest shape carries besides its geometry (MeshDescription).
+  struct RestShapeData
+  {
+    /// The target position (m) of vertex v.
+    std::function<dealii::Point<3>(unsigned int)> target;
+    /// Per active cell, in order: its mass in the image over its density
+    /// times its volume in the rest shape.
+    std::vector<double> mass_ratios;
+  };
+
   /**
    * Write the active cells of @p tria as gmsh 2.2 ASCII with labels as
    * physical volume tags. Vertex v is written at position(v) divided by
-   * @p length_unit. Written atomically.
+   * @p length_unit. With @p rest (a rest shape), also the node data
+   * "target_position" (length unit) and the element data
+   * "image_mass_ratio". Written atomically.
    */
   void
   write_gmsh(const dealii::Triangulation<3>                      &tria,
              const std::function<dealii::Point<3>(unsigned int)> &position,
              const double                                         length_unit,
-             const std::string                                   &file);
+             const std::string                                   &file,
+             const RestShapeData *rest = nullptr);
 
   /// The same for a mesh description (vertices in metres).
   void

@@ -60,6 +60,22 @@ namespace RestShape
     std::pair<double, dealii::Point<3>>
     narrowest_gap() const;
 
+    /**
+     * The mass of @p cell over its density times its volume: 1, or for a
+     * rest shape written by an inverse run (rest_shape.msh), the ratio
+     * that gives it its mass in the image.
+     */
+    double
+    mass_ratio(const dealii::CellAccessor<3, 3> &cell) const;
+
+    /**
+     * The target position (m) of every vertex of the mesh as read (and, on
+     * tetrahedra, of every vertex of its refinements), indexed by vertex of
+     * the triangulation: given by a rest_shape.msh; empty for other meshes.
+     */
+    const std::vector<dealii::Point<3>> &
+    targets() const;
+
     /// Smallest cell diameter of the active mesh (m).
     double
     minimum_cell_diameter() const;
@@ -111,6 +127,8 @@ namespace RestShape
     std::map<Label, unsigned int>             counts;
     double                                    bounding_diameter;
     std::pair<double, dealii::Point<3>>       gap;
+    std::vector<double>                       mass_ratios; // by coarse cell
+    std::vector<dealii::Point<3>>             vertex_targets;
   };
 } // namespace RestShape
 

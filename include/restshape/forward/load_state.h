@@ -1,0 +1,23 @@
+// What loads the body at one point of a solve.
+#ifndef restshape_forward_load_state_h
+#define restshape_forward_load_state_h
+
+#include <deal.II/base/tensor.h>
+
+namespace RestShape
+{
+  /**
+   * The loads of a solve at one load step: a body acceleration (gravity plus
+   * any extra field, m/s^2) acting on the mass of the mesh (target)
+   * geometry, and the uniform surface pressure (Pa). The hydrostatic
+   * pressure of a fluid (Loads/Fluid load) follows the acceleration, so
+   * both scale together when the load is stepped.
+   */
+  struct LoadState
+  {
+    dealii::Tensor<1, 3> acceleration;
+    double               pressure = 0;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,257 @@
+// ContactProblem: the strict check of the contact conditions against the
+// obstacle's surface, and what Newton does when a converged state fails it.
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+
+#include <restshape/base/input_error.h>
+#include <restshape/contact/contact.h>
+
+#include <cstdio>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using Violation = ContactConditions::Violation;
+
+    void
+    add(Violation &v, const double value, const Point<3> &where)
+    {
+      ++v.nodes;
+      if (value > v.worst)
+        {
+          v.worst = value;
+          v.where = where;
+        }
+    }
+
+    /// Sum the counts and take the worst over the ranks.
+    void
+    reduce(Violation &v, const MPI_Comm comm)
+    {
+      const std::vector<double> mine = {v.worst,
+                                        v.where[0],
+                                        v.where[1],
+                                        v.where[2]};
+      for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+        if (r[0] > v.worst)
+          {
+            v.worst = r[0];
+            v.where = Point<3>(r[1], r[2], r[3]);
+          }
+      v.nodes = Utilities::MPI::sum(v.nodes, comm);
+    }
+
+    std::string
+    describe(const Violation &v,
+             const char      *what,
+             const double     scale,
+             const char      *unit)
+    {
+      if (v.nodes == 0)
+        return "";
+      char buffer[256];
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "%u node%s %s by up to %.3g %s (the worst at (%.2f, "
+                    "%.2f, %.2f) mm)",
+                    v.nodes,
+                    v.nodes == 1 ? "" : "s",
+                    what,
+                    v.worst * scale,
+                    unit,
+                    1e3 * v.where[0],
+                    1e3 * v.where[1],
+                    1e3 * v.where[2]);
+      return buffer;
+    }
+  } // namespace
+
+  std::string
+  ContactConditions::text() const
+  {
+    std::string result;
+    for (const std::string &part :
+         {describe(through, "through the obstacle", 1e3, "mm"),
+          describe(off, "active but off the obstacle", 1e3, "mm"),
+          describe(pulling, "pulling on the obstacle", 1, "Pa")})
+      if (!part.empty())
+        result += (result.empty() ? "" : "; ") + part;
+    return result.empty() ? "the contact conditions hold" : result;
+  }
+
+  void
+  ContactProblem::check_placement(const VectorType *shift) const
+  {
+    unsigned int outside   = 0;
+    double       clearance = std::numeric_limits<double>::max();
+    for (const Candidate &c : candidates)
+      if (c.owned)
+        {
+          Point<3> x = c.node.position;
+          if (shift != nullptr)
+            for (unsigned int k = 0; k < 3; ++k)
+              x[k] += (*shift)[c.node.dofs[k]];
+          const double gap = obstacle->gap(x).gap;
+          outside += (gap < -gap_tolerance);
+          clearance = std::min(clearance, std::abs(gap));
+        }
+    const MPI_Comm     comm = communicator();
+    const unsigned int n    = n_candidates();
+    outside                 = Utilities::MPI::sum(outside, comm);
+    clearance               = Utilities::MPI::min(clearance, comm);
+    const double size       = forward.mesh().diameter();
+    const bool   too_many =
+      outside > parameters.max_outside_fraction * std::max(n, 1u);
+    if (!too_many && clearance <= size)
+      return;
+    const auto box = [](const Point<3> &a, const Point<3> &b) {
+      char buffer[160];
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "(%.4g, %.4g, %.4g)-(%.4g, %.4g, %.4g) mm",
+                    1e3 * a[0],
+                    1e3 * a[1],
+                    1e3 * a[2],
+                    1e3 * b[0],
+                    1e3 * b[1],
+                    1e3 * b[2]);
+      return std::string(buffer);
+    };
+    std::vector<Point<3>> positions;
+    for (const Node &node : forward.relevant_nodes())
+      positions.push_back(node.position);
+    const BoundingBox<3> mesh_box(positions);
+    const auto [low, high]  = obstacle->bounding_box();
+    const std::string boxes = "; mesh box " +
+                              box(mesh_box.get_boundary_points().first,
+                                  mesh_box.get_boundary_points().second) +
+                              ", obstacle box " + box(low, high);
+    if (too_many)
+      throw InputError(
+        parameters.obstacle_file,
+        "Contact/Obstacle file",
+        std::to_string(outside) + " of " + std::to_string(n) +
+          " contact candidates lie on the wrong side of the obstacle in the " +
+          std::string(shift != nullptr ? "target the mesh carries" :
+                                         "mesh geometry") +
+          " (more than Contact/Maximum outside fraction = " +
+          number_text(parameters.max_outside_fraction) + boxes +
+          "); expected the obstacle around the body (check Contact/Side and "
+          "Contact/Length unit; raise the fraction for an obstacle meant to "
+          "cut into the body)");
+    throw InputError(parameters.obstacle_file,
+                     "Contact/Obstacle file",
+                     "every contact candidate is farther from the obstacle "
+                     "than the body's size (nearest " +
+                       number_text(1e3 * clearance) + " mm, body " +
+                       number_text(1e3 * size) + " mm" + boxes +
+                       "): no contact can occur; expected the obstacle near "
+                       "the body (check Contact/Length unit)");
+  }
+
+  ContactConditions
+  ContactProblem::check_conditions(const VectorType &d,
+                                   const VectorType &raw_residual,
+                                   const double      force_tolerance) const
+  {
+    TimerOutput::Scope  scope(timer, "Contact search");
+    ContactConditions   result;
+    double              penetration = -std::numeric_limits<double>::max();
+    std::vector<double> lambda;
+    for (const Candidate &c : candidates)
+      {
+        if (!c.owned)
+          continue;
+        const Point<3> x   = position(c, d);
+        const double   gap = obstacle->gap(x).gap;
+        result.outside += (gap < -gap_tolerance);
+        if (!c.eligible)
+          continue;
+        penetration = std::max(penetration, -gap);
+        if (gap < -gap_tolerance)
+          add(result.through, -gap, x);
+        if (!c.active)
+          continue;
+        if (gap > gap_tolerance)
+          add(result.off, gap, x);
+        // The node's own multipliers: one, or one per held plane.
+        if (c.held.size() > 1)
+          reaction(c, raw_residual, &lambda);
+        else
+          lambda = {contact_force(c, raw_residual)};
+        const double least = *std::min_element(lambda.begin(), lambda.end());
+        if (least < -force_tolerance)
+          add(result.pulling, -least / c.area_lumped, x);
+      }
+    const MPI_Comm comm = communicator();
+    for (Violation *v : {&result.through, &result.off, &result.pulling})
+      reduce(*v, comm);
+    result.outside         = Utilities::MPI::sum(result.outside, comm);
+    result.max_penetration = Utilities::MPI::max(penetration, comm) + 0.;
+    return result;
+  }
+
+  bool
+  ContactProblem::enforce_conditions(const ContactConditions &violated,
+                                     const VectorType        &raw_residual,
+                                     const double             force_tolerance)
+  {
+    if (violated.satisfied())
+      return false;
+    unsigned int        changed = 0, released = 0;
+    std::vector<double> lambda;
+    for (Candidate &c : candidates)
+      {
+        if (!c.owned || !c.active)
+          continue;
+        // Planes (held or fixed) that carried the node off the surface or
+        // through it, past the end of their faces: it follows the surface
+        // again, still active (and may hold planes again later).
+        if (!c.held.empty() && std::abs(c.gap) > gap_tolerance)
+          {
+            let_go(c);
+            ++changed;
+            continue;
+          }
+        if (c.held.size() > 1)
+          {
+            reaction(c, raw_residual, &lambda);
+            for (unsigned int k = 0; k < lambda.size(); ++k)
+              if (lambda[k] < -force_tolerance)
+                c.dropped |= 1u << k;
+            if (c.dropped == 0)
+              continue;
+            ++changed;
+            if (c.dropped + 1 != (1u << lambda.size()))
+              continue; // some planes stay
+            c.dropped = 0;
+          }
+        else if (!(contact_force(c, raw_residual) < -force_tolerance))
+          continue;
+        else
+          ++changed;
+        c.active = false;
+        c.pulled = true;
+        ++released;
+      }
+    for (Candidate &c : candidates)
+      drop_planes(c, c.dropped);
+    share_flags();
+    const MPI_Comm comm = communicator();
+    n_released          = Utilities::MPI::sum(released, comm);
+    n_added             = 0;
+    // After releases, a free phase of the active set again (a lift-off
+    // front moves by a row of nodes per update: releases that wait for
+    // Newton to converge move it a row per solve).
+    if (n_released > 0)
+      {
+        releases_frozen = false;
+        n_updates       = 0;
+        history.clear();
+      }
+    return Utilities::MPI::sum(changed, comm) > 0;
+  }
+} // namespace RestShape

@@ -1,0 +1,236 @@
+// The stability of an equilibrium: shift-invert Lanczos on the constrained
+// tangent and the lumped mass, and the tangent's inertia.
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <restshape/forward/forward_problem.h>
+#include <restshape/forward/stability.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Lanczos steps: the extreme eigenvalues of K^-1 M (the ones of K
+    /// nearest zero) converge in far fewer.
+    constexpr unsigned int lanczos_steps = 40;
+
+    /// The HRZ-lumped mass matrix (kg): per cell the diagonal of the
+    /// consistent mass, scaled to the cell's mass, per component.
+    VectorType
+    lumped_mass(const ForwardProblem &forward)
+    {
+      VectorType                           mass = forward.zero_vector();
+      FEValues<3>                          fv(forward.mapping(),
+                     forward.fe(),
+                     forward.quadrature(),
+                     update_values | update_JxW_values);
+      const unsigned int                   n = forward.fe().n_dofs_per_cell();
+      std::vector<types::global_dof_index> dofs(n);
+      Vector<double>                       diagonal(n);
+      for (const auto &cell : forward.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            cell->get_dof_indices(dofs);
+            const double rho =
+              forward.materials().density(cell->material_id()) *
+              forward.mesh().mass_ratio(*cell);
+            double volume = 0, sum = 0;
+            diagonal = 0;
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                volume += fv.JxW(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  diagonal[i] +=
+                    fv.shape_value(i, q) * fv.shape_value(i, q) * fv.JxW(q);
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              sum += diagonal[i];
+            // Every component carries the cell's mass: sum / 3 per
+            // component.
+            for (unsigned int i = 0; i < n; ++i)
+              mass[dofs[i]] += rho * volume * diagonal[i] / (sum / 3);
+          }
+      mass.compress(VectorOperation::add);
+      return mass;
+    }
+
+    /// The constraints without their inhomogeneities: admissible variations.
+    AffineConstraints<double>
+    homogeneous(const ForwardProblem &forward)
+    {
+      AffineConstraints<double> h(forward.locally_relevant_dofs());
+      for (const auto &line : forward.newton_constraints().get_lines())
+        {
+          h.add_line(line.index);
+          h.add_entries(line.index, line.entries);
+        }
+      h.close();
+      return h;
+    }
+
+    /// M-inner product.
+    double
+    dot(const VectorType &a, const VectorType &M, const VectorType &b)
+    {
+      VectorType Mb = b;
+      Mb.scale(M);
+      return a * Mb;
+    }
+  } // namespace
+
+  std::string
+  StabilityResult::text() const
+  {
+    char buffer[400];
+    if (stable())
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "stable: the smallest eigenvalue of the constrained "
+                    "tangent is %.4g 1/s^2 (%.4g Hz), its mode largest at "
+                    "(%.1f, %.1f, %.1f) mm (label %u)",
+                    smallest_eigenvalue,
+                    std::sqrt(smallest_eigenvalue) / (2 * M_PI),
+                    1e3 * peak[0],
+                    1e3 * peak[1],
+                    1e3 * peak[2],
+                    static_cast<unsigned int>(label));
+    else
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "unstable: the constrained tangent has %d negative "
+                    "eigenvalue(s) near zero, the smallest %.4g 1/s^2; the "
+                    "equilibrium "
+                    "is not a minimum of the energy and the body would "
+                    "leave it along a mode largest at (%.1f, %.1f, %.1f) mm "
+                    "(label %u)",
+                    negative_eigenvalues,
+                    smallest_eigenvalue,
+                    1e3 * peak[0],
+                    1e3 * peak[1],
+                    1e3 * peak[2],
+                    static_cast<unsigned int>(label));
+    return buffer;
+  }
+
+  StabilityResult
+  check_stability(ForwardProblem &forward)
+  {
+    const AffineConstraints<double> constraints = homogeneous(forward);
+    VectorType                      M           = lumped_mass(forward);
+    // Constrained DoFs carry no mass: their modes are infinitely stiff.
+    for (const auto i : forward.locally_owned_dofs())
+      if (constraints.is_constrained(i))
+        M[i] = 0;
+    M.compress(VectorOperation::insert);
+
+    // A start vector that does not depend on the number of ranks.
+    VectorType q = forward.zero_vector();
+    for (const auto i : forward.locally_owned_dofs())
+      q[i] = std::sin(12.9898 * i + 78.233) + 0.5;
+    q.compress(VectorOperation::insert);
+    constraints.distribute(q);
+    q /= std::sqrt(dot(q, M, q));
+
+    StabilityResult         result;
+    std::vector<VectorType> Q = {q};
+    std::vector<double>     alpha, beta;
+    VectorType z = forward.zero_vector(), b = forward.zero_vector();
+    for (unsigned int j = 0; j < lanczos_steps; ++j)
+      {
+        // z = K^-1 C^T M q_j, then into the constrained space.
+        b = Q[j];
+        b.scale(M);
+        constraints.condense(b);
+        z = 0;
+        if (j == 0)
+          forward.factorise_consistent_tangent(z, b);
+        else
+          forward.solve_with_tangent(z, b);
+        constraints.distribute(z);
+        alpha.push_back(dot(Q[j], M, z));
+        // Full re-orthogonalisation (twice is enough).
+        for (unsigned int pass = 0; pass < 2; ++pass)
+          for (const VectorType &v : Q)
+            z.add(-dot(v, M, z), v);
+        const double norm = std::sqrt(std::max(dot(z, M, z), 0.));
+        if (!(norm > 1e-12 * std::abs(alpha.back())))
+          break; // an invariant subspace: its eigenvalues are exact
+        beta.push_back(norm);
+        z /= norm;
+        Q.push_back(z);
+      }
+
+    // Ritz values theta of K^-1 M: lambda = 1 / theta.
+    const unsigned int       m = alpha.size();
+    LAPACKFullMatrix<double> T(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        T(i, i) = alpha[i];
+        if (i + 1 < m)
+          T(i, i + 1) = T(i + 1, i) = beta[i];
+      }
+    Vector<double>     theta;
+    FullMatrix<double> S;
+    T.compute_eigenvalues_symmetric(-1e300, 1e300, 0, theta, S);
+    // A negative Ritz value is a Rayleigh quotient of K^-1 M: K then has
+    // a negative eigenvalue (beyond round-off of the largest theta).
+    unsigned int k             = 0; // the most negative theta, else the largest
+    double       largest_theta = 0;
+    for (unsigned int i = 0; i < theta.size(); ++i)
+      largest_theta = std::max(largest_theta, std::abs(theta[i]));
+    for (unsigned int i = 0; i < theta.size(); ++i)
+      {
+        if (theta[i] < -1e-10 * largest_theta)
+          ++result.negative_eigenvalues;
+        if (theta[k] >= 0 ? (theta[i] < 0 || theta[i] > theta[k]) :
+                            theta[i] < theta[k])
+          k = i;
+      }
+    result.smallest_eigenvalue = 1 / theta[k];
+
+    // The mode and where it is largest.
+    VectorType mode = forward.zero_vector();
+    for (unsigned int i = 0; i < m; ++i)
+      mode.add(S(i, k), Q[i]);
+    double largest = 0;
+    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            if (!forward.locally_owned_dofs().is_element(
+                  cell->vertex_dof_index(v, 0)))
+              continue;
+            Tensor<1, 3> value;
+            for (unsigned int c = 0; c < 3; ++c)
+              value[c] = mode[cell->vertex_dof_index(v, c)];
+            if (value.norm() > largest)
+              {
+                largest      = value.norm();
+                result.peak  = cell->vertex(v);
+                result.label = cell->material_id();
+              }
+          }
+    const MPI_Comm comm =
+      forward.dof_handler().get_triangulation().get_communicator();
+    const std::vector<double> mine = {largest,
+                                      result.peak[0],
+                                      result.peak[1],
+                                      result.peak[2],
+                                      double(result.label)};
+    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+      if (r[0] > largest)
+        {
+          largest      = r[0];
+          result.peak  = Point<3>(r[1], r[2], r[3]);
+          result.label = Label(r[4]);
+        }
+    return result;
+  }
+} // namespace RestShape
