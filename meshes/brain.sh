@@ -40,3 +40,8 @@ if [ "$level" = coarse ]; then
   skull="--skull-out $out/brain_skull.off --skull-gap 2 --skull-facet-size 5"
 fi
 "$build"/restshape-mesh --image "$labels" --out "$out/brain_$level.msh" $size $skull
+if [ "$level" = coarse ]; then
+  # The skull of prm/brain_skull_contact.prm: 0.5 mm from the brain.
+  "$build"/restshape-mesh --image "$labels" --out "$out/brain_$level.msh" $size \
+    --skull-out "$out/brain_skull_0.5.off" --skull-gap 0.5 --skull-facet-size 5
+fi

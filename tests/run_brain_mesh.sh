@@ -19,7 +19,9 @@ committed=$(awk '/^\$Nodes/{getline; n=$1} /^\$Elements/{getline; print n, $1; e
 made=$(awk '/^\$Nodes/{getline; n=$1} /^\$Elements/{getline; print n, $1; exit}' "$out/brain_coarse.msh")
 echo "nodes and tetrahedra: made $made, committed $committed"
 [ "$made" = "$committed" ] || fail "the regenerated mesh differs from meshes/brain_coarse.msh"
-min_angle=$(sed -n 's/^quality: dihedral angles \([0-9.]*\) to.*/\1/p' "$out.log")
+min_angle=$(sed -n 's/^quality: dihedral angles \([0-9.]*\) to.*/\1/p' "$out.log" | head -n 1)
 awk -v a="$min_angle" 'BEGIN { exit !(a > 5) }' || fail "smallest dihedral angle $min_angle deg"
 grep -q "^skull .*triangles" "$out.log" || fail "no skull"
+cmp -s "$out/brain_skull_0.5.off" meshes/brain_skull_0.5.off ||
+  fail "the regenerated 0.5 mm skull differs from meshes/brain_skull_0.5.off"
 echo "ok"

@@ -318,6 +318,8 @@ namespace RestShape
       iteration_rows.push_back({double(r.iteration),
                                 r.mean_error * 1e3,
                                 r.max_error * 1e3,
+                                r.mean_image_error * 1e3,
+                                r.max_image_error * 1e3,
                                 double(r.newton_iterations),
                                 double(r.active_contact_nodes),
                                 r.wall_seconds,
@@ -327,6 +329,8 @@ namespace RestShape
                       {"iteration",
                        "mean_error_mm",
                        "max_error_mm",
+                       "mean_error_to_image_mm",
+                       "max_error_to_image_mm",
                        "newton_iterations",
                        "active_contact_nodes",
                        "wall_seconds",
@@ -339,6 +343,19 @@ namespace RestShape
     summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
     summary.set("mean_error_mm", inverse_result.mean_error * 1e3);
     summary.set("max_error_mm", inverse_result.max_error * 1e3);
+    if (contact)
+      {
+        summary.set("mean_error_to_image_mm",
+                    inverse_result.mean_image_error * 1e3);
+        summary.set("max_error_to_image_mm",
+                    inverse_result.max_image_error * 1e3);
+        summary.set("unreachable_target_nodes",
+                    long(inverse_result.unreachable_nodes));
+        summary.set("unreachable_target_max_mm",
+                    inverse_result.unreachable_max * 1e3);
+        summary.set("unreachable_target_mean_mm",
+                    inverse_result.unreachable_mean * 1e3);
+      }
 
     SolveStatistics stats;
     stats.converged         = inverse_result.converged;
@@ -538,7 +555,7 @@ namespace RestShape
     summary.set("n_dofs", long(forward->dof_handler().n_dofs()));
     summary.set("newton_iterations", long(stats.newton_iterations));
     summary.set("load_steps", long(stats.load_steps));
-    if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
+    if (forward->linear_solver_kind() == LinearSolverType::cg_amg)
       summary.set("linear_iterations_per_newton_step",
                   double(stats.linear_iterations) /
                     std::max(1u, stats.newton_iterations));

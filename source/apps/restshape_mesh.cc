@@ -10,7 +10,8 @@
 //
 // The mesh is written as gmsh 2.2 in mm, every tetrahedron with its image
 // label as physical volume tag. The skull is a closed, outward-oriented
-// surface at --skull-gap mm from the labelled region, for
+// surface at --skull-gap mm from the labelled region (0: touching it;
+// negative: cutting into it, as a segmented skull can), for
 // Contact/Obstacle file with Side = inside. Before the offset, the labelled
 // region is closed morphologically with a ball of --skull-closing mm
 // (default 10; 0 = none), so that the skull bridges sulci and fissures.
@@ -68,6 +69,20 @@ namespace
         nodes.insert(face.begin(), face.end());
     return nodes;
   }
+
+  /// The skull's facet distance (mm): within half the gap of the exact
+  /// surface, so that the mesh stays inside; for a gap <= 0 (a skull that
+  /// touches or cuts the mesh) a tenth of its facet size, so that where it
+  /// cuts is decided by the gap, not by its chords.
+  double
+  skull_facet_distance(const double facet_distance,
+                       const double gap,
+                       const double facet_size)
+  {
+    constexpr double chord_fraction = 0.1;
+    return gap > 0 ? std::min(facet_distance, gap / 2) :
+                     std::min(facet_distance, chord_fraction * facet_size);
+  }
 } // namespace
 
 int
@@ -78,6 +93,7 @@ main(int argc, char **argv)
       std::string      image_file, out, skull_out;
       ImageMeshOptions options;
       double           skull_gap = 0, skull_facet_size = 0, skull_closing = 10;
+      bool             skull_gap_given    = false;
       double           min_piece_fraction = 0.01, close_sulci = 0;
       bool             facet_size_given = false;
       for (int i = 1; i < argc; ++i)
@@ -122,7 +138,10 @@ main(int argc, char **argv)
           else if (arg == "--close-sulci")
             close_sulci = value == "0" ? 0. : parse_positive(arg, value);
           else if (arg == "--skull-gap")
-            skull_gap = parse_positive(arg, value);
+            {
+              skull_gap       = parse_number(arg, value);
+              skull_gap_given = true;
+            }
           else if (arg == "--skull-closing")
             skull_closing = value == "0" ? 0. : parse_positive(arg, value);
           else if (arg == "--skull-facet-size")
@@ -144,11 +163,11 @@ main(int argc, char **argv)
         throw InputError("",
                          "--out",
                          "no output mesh given; expected a .msh file name");
-      if (!skull_out.empty() && skull_gap == 0)
+      if (!skull_out.empty() && !skull_gap_given)
         throw InputError("",
                          "--skull-gap",
                          "--skull-out needs the CSF gap in mm");
-      if (skull_out.empty() && skull_gap > 0)
+      if (skull_out.empty() && skull_gap_given)
         throw InputError("",
                          "--skull-out",
                          "--skull-gap given without an output surface");
@@ -281,18 +300,21 @@ main(int argc, char **argv)
                                     skull_gap,
                                     skull_closing,
                                     skull_facet_size,
-                                    std::min(options.facet_distance,
-                                             skull_gap / 2),
+                                    skull_facet_distance(options.facet_distance,
+                                                         skull_gap,
+                                                         skull_facet_size),
                                     skull_out);
           const Obstacle skull(skull_out, 1e-3, true);
           double         min_gap = 1e9, max_gap = 0, sum = 0;
-          const auto     nodes = boundary_nodes(mesh);
+          unsigned int   outside = 0;
+          const auto     nodes   = boundary_nodes(mesh);
           for (const unsigned int v : nodes)
             {
               const double gap = skull.gap(in_metres.vertices[v]).gap * 1e3;
               min_gap          = std::min(min_gap, gap);
               max_gap          = std::max(max_gap, gap);
               sum += gap;
+              outside += gap < 0;
             }
           std::cout << "skull " << skull_out << ": " << n_triangles
                     << " triangles, gap " << skull_gap << " mm, in "
@@ -300,13 +322,22 @@ main(int argc, char **argv)
                     << " s; distance from the mesh's surface nodes to it: min "
                     << min_gap << ", mean " << sum / nodes.size() << ", max "
                     << max_gap << " mm" << std::endl;
-          if (min_gap <= 0)
+          if (skull_gap > 0 && min_gap <= 0)
             throw InputError(
               skull_out,
               "--skull-gap",
               "a surface node of the mesh lies outside the skull (gap " +
                 number_text(min_gap) +
                 " mm); expected a gap larger than --facet-distance");
+          if (min_gap < 0)
+            std::cout << "skull: " << outside << " of " << nodes.size()
+                      << " surface nodes of the mesh lie outside it (by up "
+                         "to "
+                      << -min_gap
+                      << " mm): the target crosses the skull; restshape "
+                         "iterates towards their projection onto it "
+                         "(the admissible target)"
+                      << std::endl;
         }
     }
   catch (const std::exception &exc)

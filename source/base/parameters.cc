@@ -4,6 +4,7 @@
 #include <restshape/base/parameters.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace RestShape
 {
@@ -362,13 +363,16 @@ namespace RestShape
   SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("Linear solver",
-                      "direct",
-                      Patterns::Selection("direct|cg-amg"),
-                      "direct: sparse LU (MUMPS through Trilinos Amesos). "
-                      "cg-amg: conjugate gradients preconditioned by "
-                      "Trilinos ML algebraic multigrid built with the six "
-                      "rigid-body modes (GMRES if CG breaks down).");
+    prm.declare_entry(
+      "Linear solver",
+      "auto",
+      Patterns::Selection("auto|direct|cg-amg"),
+      "auto: direct up to 20000 DoFs or when some direction is held by no fixed label, cg-amg otherwise (the run "
+      "says which it took). "
+      "direct: sparse LU (MUMPS through Trilinos Amesos). "
+      "cg-amg: conjugate gradients preconditioned by "
+      "Trilinos ML algebraic multigrid built with the six "
+      "rigid-body modes (GMRES if CG breaks down).");
     prm.declare_entry("Newton tolerance",
                       "1e-10",
                       Patterns::Double(0),
@@ -468,9 +472,10 @@ namespace RestShape
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    linear_solver             = prm.get("Linear solver") == "cg-amg" ?
-                                  LinearSolverType::cg_amg :
-                                  LinearSolverType::direct;
+    const std::string solver  = prm.get("Linear solver");
+    linear_solver             = solver == "cg-amg" ? LinearSolverType::cg_amg :
+                                solver == "direct" ? LinearSolverType::direct :
+                                                     LinearSolverType::automatic;
     newton_tolerance          = prm.get_double("Newton tolerance");
     max_newton_iterations     = prm.get_integer("Maximum Newton iterations");
     linear_tolerance          = prm.get_double("Linear solver tolerance");
@@ -484,12 +489,12 @@ namespace RestShape
     max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
     initial_load_steps        = prm.get_integer("Initial load steps");
     check_stability           = prm.get_bool("Check stability");
-    if (check_stability && linear_solver != LinearSolverType::direct)
+    if (check_stability && linear_solver == LinearSolverType::cg_amg)
       throw InputError("",
                        "Solver/Check stability",
-                       "the stability check needs the inertia of a direct "
-                       "factorisation; expected Solver/Linear solver = "
-                       "direct");
+                       "the stability check needs a direct factorisation "
+                       "(shift-invert); expected Solver/Linear solver = "
+                       "direct or auto");
     prm.leave_subsection();
     if (!(newton_tolerance > 0))
       throw InputError("",
@@ -670,6 +675,14 @@ namespace RestShape
                       Patterns::Anything(),
                       "Labels whose boundary nodes may touch the obstacle; "
                       "empty: all labels.");
+    prm.declare_entry(
+      "Gap tolerance",
+      "0",
+      Patterns::Double(0),
+      "How far, in mm, a node may be beyond the obstacle, or an "
+      "active node off it, in a converged state (the strict "
+      "contact check). 0: the Newton tolerance times the "
+      "body's size (round-off).");
     prm.declare_entry("Active set constant",
                       "100",
                       Patterns::Double(0),
@@ -691,10 +704,12 @@ namespace RestShape
       "0.05",
       Patterns::Double(0, 1),
       "Largest fraction of the contact candidates (boundary nodes of the "
-      "contact labels) that may lie on the wrong side of the obstacle in "
-      "the mesh geometry; more stops the run before solving (a misplaced "
-      "obstacle, or one in other units). Raise it for an obstacle that is "
-      "meant to cut into the body, such as a segmented skull.");
+      "contact labels) that may lie on the wrong side of the obstacle, "
+      "deeper than 5 % of the body's size, in the target geometry; more "
+      "stops the run before solving (a misplaced obstacle, or one in other "
+      "units). Shallower crossings (a segmented skull that cuts into the "
+      "brain) are allowed: the inverse problem then aims at the admissible "
+      "target, the target projected onto the obstacle.");
     prm.declare_entry(
       "Crease plane changes",
       "6",
@@ -725,6 +740,7 @@ namespace RestShape
     free_updates         = prm.get_integer("Free active-set updates");
     plane_changes        = prm.get_integer("Crease plane changes");
     max_outside_fraction = prm.get_double("Maximum outside fraction");
+    gap_tolerance        = prm.get_double("Gap tolerance") * 1e-3;
     prm.leave_subsection();
     if (!(active_set_constant > 0))
       throw InputError("",
@@ -753,8 +769,16 @@ namespace RestShape
     prm.declare_entry("Tolerance",
                       "0.01",
                       Patterns::Double(0),
-                      "The iteration stops when the error measure is below "
-                      "this, in mm.");
+                      "The iteration has converged when the error measure is "
+                      "at most this, in mm (and the largest nodal error at "
+                      "most Maximum error tolerance).");
+    prm.declare_entry("Maximum error tolerance",
+                      "",
+                      Patterns::Anything(),
+                      "Bound on the largest nodal error |X_target - "
+                      "X_equilibrium| at convergence, in mm, so that single "
+                      "nodes cannot lag behind a small mean. Empty: 10 times "
+                      "Tolerance.");
     prm.declare_entry("Maximum iterations",
                       "50",
                       Patterns::Integer(1),
@@ -781,7 +805,25 @@ namespace RestShape
     prm.enter_subsection("Inverse problem");
     enabled = prm.get_bool("Enabled");
     measure = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
-    tolerance      = prm.get_double("Tolerance") * 1e-3;
+    tolerance = prm.get_double("Tolerance") * 1e-3;
+    {
+      const std::string text =
+        dealii::Utilities::trim(prm.get("Maximum error tolerance"));
+      constexpr double default_ratio = 10;
+      max_tolerance                  = default_ratio * tolerance;
+      if (!text.empty())
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(text.c_str(), &end);
+          if (end == text.c_str() || *end != '\0' || !(value > 0))
+            throw InputError("",
+                             "Inverse problem/Maximum error tolerance",
+                             "'" + text +
+                               "': expected a positive length in mm, or "
+                               "nothing for 10 times Tolerance");
+          max_tolerance = value * 1e-3;
+        }
+    }
     max_iterations = prm.get_integer("Maximum iterations");
     acceleration   = prm.get("Acceleration") == "none" ? Acceleration::none :
                                                          Acceleration::anderson;

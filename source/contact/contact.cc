@@ -20,8 +20,10 @@ namespace RestShape
   ContactProblem::ContactProblem(const ContactParameters &parameters,
                                  const ForwardProblem    &forward,
                                  TimerOutput             &timer)
-    : gap_tolerance(std::max(1e-10, forward.newton_tolerance()) *
-                    forward.mesh().diameter())
+    : gap_tolerance(parameters.gap_tolerance > 0 ?
+                      parameters.gap_tolerance :
+                      std::max(1e-10, forward.newton_tolerance()) *
+                        forward.mesh().diameter())
     , parameters(parameters)
     , forward(forward)
     , timer(timer)

@@ -85,8 +85,13 @@ namespace RestShape
   void
   ContactProblem::check_placement(const VectorType *shift) const
   {
-    unsigned int outside   = 0;
-    double       clearance = std::numeric_limits<double>::max();
+    // Nodes beyond the obstacle by more than this fraction of the body's
+    // size count as misplaced; a segmented skull that cuts a millimetre
+    // into a brain does not.
+    constexpr double deep_fraction = 0.05;
+    const double     size          = forward.mesh().diameter();
+    unsigned int     outside       = 0;
+    double           clearance     = std::numeric_limits<double>::max();
     for (const Candidate &c : candidates)
       if (c.owned)
         {
@@ -95,15 +100,14 @@ namespace RestShape
             for (unsigned int k = 0; k < 3; ++k)
               x[k] += (*shift)[c.node.dofs[k]];
           const double gap = obstacle->gap(x).gap;
-          outside += (gap < -gap_tolerance);
+          outside += (gap < -deep_fraction * size);
           clearance = std::min(clearance, std::abs(gap));
         }
     const MPI_Comm     comm = communicator();
     const unsigned int n    = n_candidates();
     outside                 = Utilities::MPI::sum(outside, comm);
     clearance               = Utilities::MPI::min(clearance, comm);
-    const double size       = forward.mesh().diameter();
-    const bool   too_many =
+    const bool too_many =
       outside > parameters.max_outside_fraction * std::max(n, 1u);
     if (!too_many && clearance <= size)
       return;
@@ -134,7 +138,10 @@ namespace RestShape
         parameters.obstacle_file,
         "Contact/Obstacle file",
         std::to_string(outside) + " of " + std::to_string(n) +
-          " contact candidates lie on the wrong side of the obstacle in the " +
+          " contact candidates lie on the wrong side of the obstacle, deeper "
+          "than " +
+          number_text(1e3 * deep_fraction * size) +
+          " mm (5 % of the body), in the " +
           std::string(shift != nullptr ? "target the mesh carries" :
                                          "mesh geometry") +
           " (more than Contact/Maximum outside fraction = " +
@@ -150,6 +157,22 @@ namespace RestShape
                        number_text(1e3 * size) + " mm" + boxes +
                        "): no contact can occur; expected the obstacle near "
                        "the body (check Contact/Length unit)");
+  }
+
+  VectorType
+  ContactProblem::admissible_target_shift() const
+  {
+    VectorType shift = forward.zero_vector();
+    for (const Candidate &c : candidates)
+      if (c.owned)
+        {
+          const Gap g = obstacle->gap(c.node.position);
+          if (g.gap < -gap_tolerance)
+            for (unsigned int k = 0; k < 3; ++k)
+              shift[c.node.dofs[k]] = -g.gap * g.gradient[k];
+        }
+    shift.compress(VectorOperation::insert);
+    return shift;
   }
 
   ContactConditions

@@ -149,13 +149,50 @@ namespace RestShape
     support_labels  = labels_or_unfixed(parameters.boundary.support_labels);
     setup_surface_load();
 
+    SolverParameters solver = parameters.solver;
+    solver.linear_solver    = resolve_linear_solver();
+    linear_solver_type      = solver.linear_solver;
     linear_solver =
-      std::make_unique<LinearSolver>(parameters.solver,
+      std::make_unique<LinearSolver>(solver,
                                      parameters.discretization.degree,
                                      &timer);
     linear_solver->set_symmetric(symmetric_tangent);
-    if (parameters.solver.linear_solver == LinearSolverType::cg_amg)
+    if (linear_solver_type == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
+  }
+
+  LinearSolverType
+  ForwardProblem::resolve_linear_solver() const
+  {
+    if (parameters.solver.linear_solver != LinearSolverType::automatic)
+      return parameters.solver.linear_solver;
+    const types::global_dof_index n = dof_handler_.n_dofs();
+    // A direction that no fixed label holds leaves the tangent singular
+    // until contact or the support acts: CG cannot solve that, the direct
+    // solver can.
+    bool held[3] = {false, false, false};
+    for (const auto &f : parameters.boundary.fixed_labels)
+      for (unsigned int c = 0; c < 3; ++c)
+        held[c] = held[c] || f.components[c];
+    const bool             all_held = held[0] && held[1] && held[2];
+    const LinearSolverType chosen   = n <= auto_direct_dofs || !all_held ?
+                                        LinearSolverType::direct :
+                                        LinearSolverType::cg_amg;
+    pcout << "Linear solver: auto chose "
+          << (chosen == LinearSolverType::direct ? "direct" : "cg-amg")
+          << " for " << n << " DoFs ("
+          << (all_held ? "direct up to " + std::to_string(auto_direct_dofs) :
+                         std::string("a direction no fixed label holds"))
+          << ")" << std::endl;
+    if (chosen == LinearSolverType::cg_amg && parameters.solver.check_stability)
+      throw InputError("",
+                       "Solver/Check stability",
+                       "Linear solver = auto chose cg-amg for " +
+                         std::to_string(n) +
+                         " DoFs; the stability check needs a direct "
+                         "factorisation: expected Solver/Linear solver = "
+                         "direct");
+    return chosen;
   }
 
   void

@@ -318,7 +318,7 @@ namespace RestShape
               << (inverted_trials > 0 ? " (" + std::to_string(inverted_trials) +
                                           " shorter: a cell inverted)" :
                                         std::string())
-              << (parameters.solver.linear_solver == LinearSolverType::cg_amg ?
+              << (linear_solver_type == LinearSolverType::cg_amg ?
                     ", " + linear_solver->last_method + " " +
                       std::to_string(linear_iterations) + " its" :
                     std::string())

@@ -125,6 +125,57 @@ namespace RestShape
     , wall_timer(wall_timer)
   {}
 
+  std::pair<double, double>
+  InverseProblem::target_errors() const
+  {
+    VectorType e = forward.owned_copy(forward.displacement());
+    e -= target_shift;
+    return forward.nodal_norms(e);
+  }
+
+  bool
+  InverseProblem::converged(const std::pair<double, double> &errors) const
+  {
+    return measure(errors) <= parameters.tolerance &&
+           errors.second <= parameters.max_tolerance;
+  }
+
+  void
+  InverseProblem::set_admissible_target(InverseResult &result)
+  {
+    target_shift = forward.zero_vector();
+    if (contact == nullptr)
+      return;
+    target_shift     = contact->admissible_target_shift();
+    unsigned int n   = 0;
+    double       sum = 0, largest = 0;
+    for (const Node &node : forward.owned_nodes())
+      {
+        Tensor<1, 3> s;
+        for (unsigned int c = 0; c < 3; ++c)
+          s[c] = target_shift[node.dofs[c]];
+        if (s.norm() > 0)
+          {
+            ++n;
+            sum += s.norm();
+            largest = std::max(largest, s.norm());
+          }
+      }
+    const MPI_Comm comm = forward.mesh().triangulation().get_communicator();
+    result.unreachable_nodes = Utilities::MPI::sum(n, comm);
+    result.unreachable_max   = Utilities::MPI::max(largest, comm);
+    result.unreachable_mean =
+      Utilities::MPI::sum(sum, comm) / std::max(1u, result.unreachable_nodes);
+    if (result.unreachable_nodes > 0)
+      pcout << "Target: " << result.unreachable_nodes
+            << " contact nodes of the image lie beyond the obstacle (by up to "
+            << mm(result.unreachable_max) << ", mean "
+            << mm(result.unreachable_mean)
+            << "); the iteration aims at the admissible target, those nodes "
+               "projected onto it"
+            << std::endl;
+  }
+
   double
   InverseProblem::measure(const std::pair<double, double> &errors) const
   {
@@ -144,10 +195,13 @@ namespace RestShape
                          const SolveStatistics &stats,
                          const bool             anderson)
   {
-    const auto errors = forward.nodal_norms(forward.displacement());
+    const auto errors = target_errors();
+    const auto image  = forward.nodal_norms(forward.displacement());
     history.push_back({iteration,
                        errors.first,
                        errors.second,
+                       image.first,
+                       image.second,
                        stats.newton_iterations,
                        contact != nullptr ? contact->n_active() : 0,
                        wall_timer.wall_time(),
@@ -179,7 +233,7 @@ namespace RestShape
       return;
     TimerOutput::Scope scope(timer, "Output");
     // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
-    VectorType error = forward.zero_vector(), target = forward.zero_vector();
+    VectorType error = target_shift, target = forward.zero_vector();
     error -= forward.owned_copy(forward.displacement());
     for (const Node &node : forward.owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
@@ -195,7 +249,11 @@ namespace RestShape
       {&error, {"error_" + unit}, scale, "error_magnitude_" + unit},
       {&target, {"target_position_" + unit}, scale, ""},
       {&rest, {"rest_position_" + unit}, scale, ""},
-      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""}};
+      {&equilibrium, {"equilibrium_position_" + unit}, scale, ""},
+      {&target_shift,
+       {"unreachable_target_" + unit},
+       scale,
+       "unreachable_target_magnitude_" + unit}};
     VectorType contact_fields;
     if (contact != nullptr)
       {
@@ -219,9 +277,12 @@ namespace RestShape
     const LoadState load   = forward.scene_load();
     const auto      finish = [&](const std::string &reason) {
       result.reason     = reason;
-      const auto e      = forward.nodal_norms(forward.displacement());
+      const auto e      = target_errors();
       result.mean_error = e.first;
       result.max_error  = e.second;
+      const auto image  = forward.nodal_norms(forward.displacement());
+      result.mean_image_error = image.first;
+      result.max_image_error  = image.second;
       if (!reason.empty())
         pcout << "Inverse iteration stopped: " << reason << std::endl;
       return result;
@@ -230,7 +291,35 @@ namespace RestShape
     // Iteration 0: the forward problem from the initial rest shape (the
     // target itself unless a rest shape was given), loaded from zero or
     // started from the guess.
-    SolveStatistics stats = forward.solve_from(guess, load, initial_rest);
+    set_admissible_target(result);
+    // Where the image crosses the obstacle, the first rest shape is the
+    // admissible target (else the nodes beyond it start free, on the wrong
+    // side, and may be all that would hold the body).
+    VectorType   start = initial_rest;
+    unsigned int n_bad = 0;
+    const bool   from_admissible =
+      guess == nullptr && initial_rest.linfty_norm() == 0 &&
+      target_shift.linfty_norm() > 0 &&
+      forward.rest_shape_is_valid(target_shift, n_bad);
+    SolveStatistics stats;
+    if (from_admissible)
+      {
+        start = target_shift;
+        forward.set_state(start, start, LoadState());
+        contact->reset();
+        stats = forward.solve(load, start);
+        if (!stats.converged)
+          {
+            pcout << "  The forward solve from the admissible target failed ("
+                  << stats.failure << "); starting from the image instead"
+                  << std::endl;
+            result.forward_solves += 1;
+            result.newton_iterations += stats.newton_iterations;
+            start = initial_rest;
+          }
+      }
+    if (!from_admissible || !stats.converged)
+      stats = forward.solve_from(guess, load, initial_rest);
     ++result.forward_solves;
     result.newton_iterations += stats.newton_iterations;
     if (!stats.converged)
@@ -240,9 +329,9 @@ namespace RestShape
     record(0, stats, false);
     write_output(first_step, 0);
 
-    const double initial = measure(forward.nodal_norms(forward.displacement()));
+    const double  initial = measure(target_errors());
     StoppingRules stopping(initial, parameters.tolerance);
-    if (initial <= parameters.tolerance)
+    if (converged(target_errors()))
       {
         result.converged = true;
         return finish("");
@@ -251,14 +340,15 @@ namespace RestShape
     const bool accelerate =
       parameters.acceleration == InverseParameters::Acceleration::anderson;
     AndersonAccelerator anderson(parameters.anderson_depth);
-    VectorType          w = initial_rest, d = forward.zero_vector();
+    VectorType          w = start, d = forward.zero_vector();
     d                = forward.displacement();
     bool force_plain = false;
 
     while (result.iterations < parameters.max_iterations)
       {
-        // The fixed point: e = X_target - X_eq = -d; plain update w + e.
-        VectorType f = forward.zero_vector();
+        // The fixed point: e = X_target - X_eq = t - d (t: the admissible
+        // target's shift); plain update w + e.
+        VectorType f = target_shift;
         f -= d;
         VectorType plain = w;
         plain += f;
@@ -311,7 +401,7 @@ namespace RestShape
         stats = forward.solve(load, candidate);
         ++result.forward_solves;
         result.newton_iterations += stats.newton_iterations;
-        const auto   errors = forward.nodal_norms(forward.displacement());
+        const auto   errors = target_errors();
         const double error  = measure(errors);
         // A plain update whose forward solve failed: the forward solve has
         // already tried ever smaller fractions of it (its load-step
@@ -361,7 +451,7 @@ namespace RestShape
         record(result.iterations, stats, accelerated);
         write_output(first_step + result.iterations, result.iterations);
 
-        if (error <= parameters.tolerance)
+        if (converged(errors))
           {
             result.converged = true;
             return finish("");

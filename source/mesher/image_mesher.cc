@@ -223,12 +223,24 @@ namespace RestShape
     // sulci and fissures narrower than the ball, as the inner table of the
     // skull does.
     close_with_ball(region, grid, closing);
-    const std::vector<double> dist = distance_to(region, grid);
+    // Signed distance to the boundary of the closed region (half a voxel
+    // beyond the centres of its outer voxels), negative inside, so that a
+    // gap <= 0 puts the surface on or into the region (a segmented skull
+    // that touches or cuts the brain).
+    std::vector<double> dist = distance_to(region, grid);
+    {
+      std::vector<bool> outside(region.size());
+      for (std::size_t v = 0; v < region.size(); ++v)
+        outside[v] = !region[v];
+      const std::vector<double> inward = distance_to(outside, grid);
+      for (std::size_t v = 0; v < region.size(); ++v)
+        dist[v] =
+          region[v] ? -(inward[v] - 0.5 * h_min) : dist[v] - 0.5 * h_min;
+    }
 
-    // Distance to the boundary of the labelled region (half a voxel beyond
-    // the centres of its outer voxels) minus the gap, trilinear, in scaled
-    // index space of the unpadded image.
-    const double shift    = 0.5 * h_min + gap;
+    // The signed distance minus the gap, trilinear, in scaled index space
+    // of the unpadded image.
+    const double shift    = gap;
     const auto   function = [&](const Point &p) -> double {
       std::array<double, 3>       x{{CGAL::to_double(p.x()) / h[0] + pad,
                                      CGAL::to_double(p.y()) / h[1] + pad,

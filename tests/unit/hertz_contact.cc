@@ -56,6 +56,9 @@ namespace
     const SolveStatistics stats =
       s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
     std::filesystem::remove(file);
+    if (!stats.converged)
+      std::cout << "refinements " << refinements
+                << ": not converged: " << stats.failure << std::endl;
 
     Result r;
     r.newton       = stats.converged ? stats.newton_iterations : 0;

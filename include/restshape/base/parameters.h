@@ -42,9 +42,13 @@ namespace RestShape
 
   enum class LinearSolverType
   {
+    automatic, // direct up to auto_direct_dofs DoFs, else cg_amg
     direct,
     cg_amg
   };
+
+  /// Linear solver = auto: the direct solver up to this many DoFs.
+  constexpr unsigned int auto_direct_dofs = 20000;
 
   /// Parse a length unit name ("mm" or "m") into metres per unit.
   double
@@ -200,6 +204,7 @@ namespace RestShape
     unsigned int    free_updates  = 10;
     unsigned int    plane_changes = 6; // then a crease node's planes are fixed
     double max_outside_fraction   = 0.05; // of the candidates, before solving
+    double gap_tolerance          = 0;    // m; 0: round-off
 
     bool
     enabled() const
@@ -227,7 +232,8 @@ namespace RestShape
     };
     bool         enabled;
     Measure      measure;
-    double       tolerance; // m
+    double       tolerance;     // m, on the error measure
+    double       max_tolerance; // m, on the largest nodal error
     unsigned int max_iterations;
     Acceleration acceleration;
     unsigned int anderson_depth;

@@ -67,6 +67,16 @@ namespace RestShape
     void
     check_placement(const VectorType *shift = nullptr) const;
 
+    /**
+     * The admissible target: the mesh geometry with every contact
+     * candidate that lies beyond the obstacle (by more than the gap
+     * tolerance) moved onto it, to its closest point. Returns that move
+     * (owned vector, m; zero at every other DoF): the part of the target
+     * that no equilibrium can reach.
+     */
+    VectorType
+    admissible_target_shift() const;
+
     /// A new solve starts from displacement @p d (ghosted).
     void
     begin_solve(const VectorType &d);

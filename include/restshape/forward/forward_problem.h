@@ -212,6 +212,12 @@ namespace RestShape
     {
       return parameters;
     }
+    /// The linear solver in use (Linear solver = auto resolved by size).
+    LinearSolverType
+    linear_solver_kind() const
+    {
+      return linear_solver_type;
+    }
     const MaterialTable &
     materials() const;
 
@@ -326,6 +332,9 @@ namespace RestShape
     raw_residual() const;
 
   private:
+    /// Linear solver = auto: direct or cg-amg by the number of DoFs.
+    LinearSolverType
+    resolve_linear_solver() const;
     struct ScratchData;
     struct CopyData;
     enum class Assemble
@@ -413,6 +422,7 @@ namespace RestShape
     const MaterialTable        &material_table;
     dealii::TimerOutput        &timer;
     dealii::ConditionalOStream &pcout;
+    LinearSolverType            linear_solver_type = LinearSolverType::direct;
     const MPI_Comm              comm;
 
     std::unique_ptr<dealii::Mapping<3>> mapping_;

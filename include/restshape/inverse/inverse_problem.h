@@ -21,8 +21,10 @@ namespace RestShape
   struct InverseIterationRecord
   {
     unsigned int iteration;
-    double       mean_error; // m
-    double       max_error;  // m
+    double       mean_error;       // m, against the admissible target
+    double       max_error;        // m
+    double       mean_image_error; // m, against the image (the mesh)
+    double       max_image_error;  // m
     unsigned int newton_iterations;
     unsigned int active_contact_nodes;
     double       wall_seconds;
@@ -38,14 +40,22 @@ namespace RestShape
     unsigned int newton_iterations = 0;         // all forward solves
     unsigned int rejected_steps    = 0;         // rejected Anderson steps
     unsigned int partial_updates   = 0;         // plain updates taken in part
-    double       mean_error = 0, max_error = 0; // m
+    double       mean_error = 0, max_error = 0; // m, admissible target
+    double       mean_image_error = 0, max_image_error = 0; // m, the image
+    /// The unreachable part of the target: contact candidates of the image
+    /// beyond the obstacle, and their largest and mean distance to it (m).
+    unsigned int unreachable_nodes = 0;
+    double       unreachable_max = 0, unreachable_mean = 0;
   };
 
   /**
    * Find w = X_rest - X (X: the mesh = target geometry) such that the
    * equilibrium x = X + d from X_rest under the scene's loads and contact
-   * matches the target: d = 0 at every node. Fixed point (Sellier): e = -d
-   * (the nodal error X_target - X_equilibrium), w <- w + e. Each forward
+   * matches the target: d = 0 at every node. With contact, the target is
+   * the admissible one: contact candidates of the image beyond the
+   * obstacle are projected onto it (d = t there), since no equilibrium can
+   * reach them. Fixed point (Sellier): e = t - d (the nodal error
+   * X_target - X_equilibrium), w <- w + e. Each forward
    * solve starts from the previous equilibrium; the mass stays that of the
    * target geometry.
    *
@@ -91,6 +101,17 @@ namespace RestShape
   private:
     double
     measure(const std::pair<double, double> &errors) const;
+    /// Mean and max over the nodes of |X_admissible - X_equilibrium|.
+    std::pair<double, double>
+    target_errors() const;
+    /// Whether @p errors (mean, max) meet Tolerance and Maximum error
+    /// tolerance.
+    bool
+    converged(const std::pair<double, double> &errors) const;
+    /// The admissible target (ContactProblem::admissible_target_shift()),
+    /// with its figures in @p result.
+    void
+    set_admissible_target(InverseResult &result);
     void
     record(const unsigned int     iteration,
            const SolveStatistics &stats,
@@ -106,6 +127,9 @@ namespace RestShape
     dealii::ConditionalOStream         &pcout;
     const dealii::Timer                &wall_timer;
     std::vector<InverseIterationRecord> history;
+    /// X_admissible - X at every DoF (owned, m): zero but at contact
+    /// candidates of the image beyond the obstacle.
+    VectorType target_shift;
   };
 } // namespace RestShape
 
