@@ -146,12 +146,9 @@ namespace RestShape
       return;
     // Without contact or elastic support, every displacement component must
     // be fixed somewhere, or rigid-body motion makes the problem singular.
-    std::array<double, 3> n_fixed{{0, 0, 0}};
-    for (const Node &node : forward->owned_nodes())
-      for (unsigned int c = 0; c < 3; ++c)
-        n_fixed[c] += forward->is_fixed(node.dofs[c]);
+    const std::array<bool, 3> held = forward->fixed_components();
     for (unsigned int c = 0; c < 3; ++c)
-      if (Utilities::MPI::sum(n_fixed[c], comm) == 0)
+      if (!held[c])
         throw InputError(
           prm_file,
           "Boundary conditions/Fixed labels",

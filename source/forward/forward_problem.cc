@@ -170,14 +170,11 @@ namespace RestShape
     // A direction that no fixed label holds leaves the tangent singular
     // until contact or the support acts: CG cannot solve that, the direct
     // solver can.
-    bool held[3] = {false, false, false};
-    for (const auto &f : parameters.boundary.fixed_labels)
-      for (unsigned int c = 0; c < 3; ++c)
-        held[c] = held[c] || f.components[c];
-    const bool             all_held = held[0] && held[1] && held[2];
-    const LinearSolverType chosen   = n <= auto_direct_dofs || !all_held ?
-                                        LinearSolverType::direct :
-                                        LinearSolverType::cg_amg;
+    const std::array<bool, 3> held     = fixed_components();
+    const bool                all_held = held[0] && held[1] && held[2];
+    const LinearSolverType    chosen   = n <= auto_direct_dofs || !all_held ?
+                                           LinearSolverType::direct :
+                                           LinearSolverType::cg_amg;
     pcout << "Linear solver: auto chose "
           << (chosen == LinearSolverType::direct ? "direct" : "cg-amg")
           << " for " << n << " DoFs ("
@@ -845,6 +842,20 @@ namespace RestShape
   ForwardProblem::is_fixed(const types::global_dof_index dof) const
   {
     return fixed_dof[relevant_dofs.index_within_set(dof)];
+  }
+
+  std::array<bool, 3>
+  ForwardProblem::fixed_components() const
+  {
+    std::array<double, 3> n_fixed{{0, 0, 0}};
+    for (const Node &node : owned_nodes())
+      for (unsigned int c = 0; c < 3; ++c)
+        n_fixed[c] += is_fixed(node.dofs[c]);
+    const MPI_Comm      comm = dof_handler_.get_communicator();
+    std::array<bool, 3> result;
+    for (unsigned int c = 0; c < 3; ++c)
+      result[c] = Utilities::MPI::sum(n_fixed[c], comm) > 0;
+    return result;
   }
 
   const LabelledMesh &

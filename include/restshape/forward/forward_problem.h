@@ -204,6 +204,9 @@ namespace RestShape
     relevant_nodes() const;
     bool
     is_fixed(const dealii::types::global_dof_index dof) const;
+    /// Whether some node is fixed in x, y, z (over all ranks).
+    std::array<bool, 3>
+    fixed_components() const;
     const LabelledMesh &
     mesh() const;
     /// The scene's parameters.
