@@ -7,6 +7,7 @@
 #include <restshape/contact/contact.h>
 
 #include <cstdio>
+#include <set>
 
 namespace RestShape
 {
@@ -110,7 +111,10 @@ namespace RestShape
     const bool too_many =
       outside > parameters.max_outside_fraction * std::max(n, 1u);
     if (!too_many && clearance <= size)
-      return;
+      {
+        check_fixed_labels_enclosed(deep_fraction * size);
+        return;
+      }
     const auto box = [](const Point<3> &a, const Point<3> &b) {
       char buffer[160];
       std::snprintf(buffer,
@@ -157,6 +161,46 @@ namespace RestShape
                        number_text(1e3 * size) + " mm" + boxes +
                        "): no contact can occur; expected the obstacle near "
                        "the body (check Contact/Length unit)");
+  }
+
+  void
+  ContactProblem::check_fixed_labels_enclosed(const double depth) const
+  {
+    // A fixed node beyond the obstacle can never come back: the obstacle
+    // is misplaced (or the wrong side is allowed).
+    const auto &fixed = forward.scene_parameters().boundary.fixed_labels;
+    for (const FixedLabel &f : fixed)
+      {
+        std::set<unsigned int> all, outside;
+        double                 worst = 0;
+        for (const auto &cell : forward.dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned() && cell->material_id() == f.label)
+            for (const unsigned int v : cell->vertex_indices())
+              if (all.insert(cell->vertex_index(v)).second)
+                {
+                  const double gap = obstacle->gap(cell->vertex(v)).gap;
+                  if (gap < -depth)
+                    outside.insert(cell->vertex_index(v));
+                  worst = std::max(worst, -gap);
+                }
+        unsigned int   beyond = outside.size(), n = all.size();
+        const MPI_Comm comm = communicator();
+        beyond              = Utilities::MPI::sum(beyond, comm);
+        n                   = Utilities::MPI::sum(n, comm);
+        worst               = Utilities::MPI::max(worst, comm);
+        if (beyond > 0)
+          throw InputError(
+            parameters.obstacle_file,
+            "Contact/Obstacle file",
+            "the obstacle does not enclose fixed label " +
+              std::to_string(f.label) + ": " + std::to_string(beyond) +
+              " of its " + std::to_string(n) +
+              " vertices lie on the wrong side, by up to " +
+              number_text(1e3 * worst) +
+              " mm; expected the fixed labels on the allowed side (check "
+              "Contact/Side, Contact/Length unit and the obstacle's "
+              "placement)");
+      }
   }
 
   VectorType

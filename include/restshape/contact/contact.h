@@ -236,6 +236,10 @@ namespace RestShape
     const double gap_tolerance;
 
   private:
+    /// Part of check_placement(): every vertex of a fixed label is on the
+    /// allowed side, or less than @p depth (m) beyond it.
+    void
+    check_fixed_labels_enclosed(const double depth) const;
     /// The plane of an obstacle face: unit normal towards the allowed side,
     /// a point on it (m), and a node's signed distance from it (m).
     struct Plane
