@@ -25,6 +25,31 @@
 #include <deque>
 #include <iostream>
 
+namespace
+{
+  /// --help: the usage comment at the top of this file.
+  const char *const usage =
+    "restshape-brain-labels: the labelled brain image of the paper's scene,\n"
+    "built from Debian's mricron-data (Colin27 on the MNI grid).\n"
+    "\n"
+    "  restshape-brain-labels --brain ch2bet.nii.gz --atlas aal.nii.gz\n"
+    "      --out LABELS.nii.gz [--tumour X,Y,Z --tumour-radius MM]\n"
+    "      [--brainstem-half-width MM]\n"
+    "\n"
+    "Labels: 1 cerebrum, 2 tumour, 3 cerebellum, 4 brainstem.\n"
+    " - brain: the largest connected component of the non-zero voxels of\n"
+    "   --brain, its cavities filled;\n"
+    " - cerebellum: AAL indices 91-116 (cerebellum and vermis);\n"
+    " - cerebrum: AAL indices 1-90;\n"
+    " - brainstem: brain voxels without an AAL index, below the lowest cerebral\n"
+    "   voxel and within --brainstem-half-width mm of the midline (x = 0);\n"
+    " - the remaining brain voxels (white matter, unlabelled rim) take the label\n"
+    "   of the nearest labelled voxel;\n"
+    " - tumour: the brain voxels within --tumour-radius mm of --tumour (MNI mm);\n"
+    " - finally every label keeps only its largest connected piece; the other\n"
+    "   pieces are given to their neighbours, so that each region is one solid.\n";
+} // namespace
+
 using namespace RestShape;
 
 namespace
@@ -114,6 +139,11 @@ namespace
 int
 main(int argc, char **argv)
 {
+  if (wants_help(argc, argv))
+    {
+      std::cout << usage;
+      return 0;
+    }
   try
     {
       std::string           brain_file, atlas_file, out;

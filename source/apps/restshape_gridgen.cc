@@ -31,6 +31,31 @@
 #include <array>
 #include <iostream>
 
+namespace
+{
+  /// --help: the usage comment at the top of this file.
+  const char *const usage =
+    "restshape-gridgen: structured meshes for tests and benchmarks.\n"
+    "\n"
+    "  restshape-gridgen --size LX,LY,LZ --subdivisions NX,NY,NZ\n"
+    "      [--origin X,Y,Z] [--cell-type tetrahedra|tetrahedra24|hexahedra]\n"
+    "      [--label L] [--slab AXIS:MIN:MAX:LABEL]... --out FILE.msh\n"
+    "\n"
+    "A box [origin, origin + size] (units as given, usually mm) split into\n"
+    "NX x NY x NZ hexahedra, or each hexahedron into six tetrahedra (the\n"
+    "Freudenthal split along the main diagonal, conforming across cells), or\n"
+    "into 24 tetrahedra through face and cell centres (deal.II's\n"
+    "convert_hypercube_to_simplex_mesh: a mesh with the symmetries of the box).\n"
+    "Every cell gets label L (default 1), then each --slab relabels the cells\n"
+    "whose centroid satisfies MIN <= coordinate AXIS <= MAX.\n"
+    "\n"
+    "  restshape-gridgen --hemisphere R --refinements N [--grading G]\n"
+    "      [--cell-type ...] --out FILE.msh\n"
+    "\n"
+    "A hemisphere, dome down with its pole at the origin (see\n"
+    "make_hemisphere()): label 2 for the cells on the flat top, 1 below.\n";
+} // namespace
+
 using namespace dealii;
 using namespace RestShape;
 
@@ -48,6 +73,11 @@ namespace
 int
 main(int argc, char **argv)
 {
+  if (wants_help(argc, argv))
+    {
+      std::cout << usage;
+      return 0;
+    }
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {

@@ -44,6 +44,38 @@
 #include <map>
 #include <set>
 
+namespace
+{
+  /// --help: the usage comment at the top of this file.
+  const char *const usage =
+    "restshape-mesh: a labelled NIfTI image to a labelled tetrahedral mesh\n"
+    "(CGAL Mesh_3), and optionally the skull surface around it.\n"
+    "\n"
+    "  restshape-mesh --image LABELS.nii[.gz] --out MESH.msh\n"
+    "      [--cell-size MM] [--facet-size MM] [--facet-distance MM]\n"
+    "      [--sliver-bound DEG] [--seed N] [--min-piece-fraction F]\n"
+    "      [--close-sulci MM]\n"
+    "      [--skull-out SKULL.stl --skull-gap MM [--skull-closing MM]\n"
+    "       [--skull-facet-size MM]]\n"
+    "\n"
+    "The mesh is written as gmsh 2.2 in mm, every tetrahedron with its image\n"
+    "label as physical volume tag. The skull is a closed, outward-oriented\n"
+    "surface at --skull-gap mm from the labelled region (0: touching it;\n"
+    "negative: cutting into it, as a segmented skull can), for\n"
+    "Contact/Obstacle file with Side = inside. Before the offset, the labelled\n"
+    "region is closed morphologically with a ball of --skull-closing mm\n"
+    "(default 10; 0 = none), so that the skull bridges sulci and fissures.\n"
+    "Pieces of the mesh joined to the rest only at vertices or edges (Mesh_3\n"
+    "leaves them where labelled voxels touch diagonally) and smaller than\n"
+    "--min-piece-fraction times the largest piece (default 0.01; 0 keeps all)\n"
+    "are removed: they would hinge freely and stop Newton's method.\n"
+    "--close-sulci MM (default 0 = off) closes the labelled region with a ball\n"
+    "of MM mm before meshing: sulci and gaps narrower than about 2 MM are\n"
+    "filled with the neighbouring label, so that the mesh's surface has no\n"
+    "pinched edges there (two folds touching along an edge, where CSF\n"
+    "pressure crushes the cells). The report counts the pinched edges left.\n";
+} // namespace
+
 using namespace RestShape;
 
 namespace
@@ -88,6 +120,11 @@ namespace
 int
 main(int argc, char **argv)
 {
+  if (wants_help(argc, argv))
+    {
+      std::cout << usage;
+      return 0;
+    }
   try
     {
       std::string      image_file, out, skull_out;
@@ -103,7 +140,7 @@ main(int argc, char **argv)
             throw InputError(
               "",
               arg,
-              "missing value (see the comment of source/tools/mesh.cc)");
+              "missing value (restshape-mesh --help lists the options)");
           const std::string value = argv[++i];
           if (arg == "--image")
             image_file = value;

@@ -23,6 +23,22 @@
 #include <iostream>
 #include <string>
 
+namespace
+{
+  /// --help: the usage comment at the top of this file.
+  const char *const usage =
+    "restshape-surface: closed triangulated surfaces for obstacles in tests and\n"
+    "benchmarks (CGAL), outward oriented unless --flip.\n"
+    "\n"
+    "  restshape-surface --box X0,Y0,Z0 --size LX,LY,LZ --out FILE\n"
+    "  restshape-surface --sphere X,Y,Z --radius R [--subdivisions N] --out FILE\n"
+    "      [--flip] [--open]\n"
+    "\n"
+    "FILE: .off, .stl or .obj. --flip reverses every face (an inward-oriented\n"
+    "surface), --open deletes one face (a surface with a hole): both make\n"
+    "invalid obstacles, for the error tests.\n";
+} // namespace
+
 using namespace RestShape;
 
 namespace
@@ -36,6 +52,11 @@ namespace
 int
 main(int argc, char **argv)
 {
+  if (wants_help(argc, argv))
+    {
+      std::cout << usage;
+      return 0;
+    }
   try
     {
       std::string           shape, out;

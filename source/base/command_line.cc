@@ -7,6 +7,15 @@
 
 namespace RestShape
 {
+  bool
+  wants_help(const int argc, char **argv)
+  {
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+        return true;
+    return false;
+  }
+
   double
   parse_number(const std::string &option, const std::string &text)
   {

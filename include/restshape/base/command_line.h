@@ -20,6 +20,10 @@ namespace RestShape
   /// Three comma-separated numbers, e.g. "1, 2.5, -3".
   std::array<double, 3>
   parse_triple(const std::string &option, const std::string &text);
+
+  /// Whether the command line asks for help (--help or -h anywhere).
+  bool
+  wants_help(const int argc, char **argv);
 } // namespace RestShape
 
 #endif
