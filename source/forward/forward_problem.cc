@@ -206,23 +206,18 @@ namespace RestShape
                        fe_,
                        face_quadrature_,
                        update_quadrature_points);
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          pressure_labels.count(cell->material_id()))
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
+    for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
+      fv.reinit(cell, f);
+      for (const Point<3> &x : fv.get_quadrature_points())
+        {
+          points.push_back(x);
+          if (up * x > highest)
             {
-              fv.reinit(cell, f);
-              for (const Point<3> &x : fv.get_quadrature_points())
-                {
-                  points.push_back(x);
-                  if (up * x > highest)
-                    {
-                      highest = up * x;
-                      top     = x;
-                    }
-                }
+              highest = up * x;
+              top     = x;
             }
+        }
+    });
     // The highest point over all ranks.
     const std::vector<double> mine = {highest, top[0], top[1], top[2]};
     for (const auto &r : Utilities::MPI::all_gather(comm, mine))
@@ -268,30 +263,27 @@ namespace RestShape
       const unsigned int a = line->vertex_index(0), b = line->vertex_index(1);
       return std::make_pair(std::min(a, b), std::max(a, b));
     };
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      if (!cell->is_artificial() && pressure_labels.count(cell->material_id()))
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
-              ++count[key(cell->face(f)->line(l))];
+    for_each_boundary_face(
+      pressure_labels,
+      [&](const auto &cell, auto f) {
+        for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+          ++count[key(cell->face(f)->line(l))];
+      },
+      true);
     bool                                 held = true;
     std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          pressure_labels.count(cell->material_id()))
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
-              {
-                const auto line = cell->face(f)->line(l);
-                if (count[key(line)] != 1)
-                  continue;
-                dofs.resize(fe_.n_dofs_per_line() +
-                            2 * fe_.n_dofs_per_vertex());
-                line->get_dof_indices(dofs);
-                for (const auto dof : dofs)
-                  held = held && is_fixed(dof);
-              }
+    for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
+      for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+        {
+          const auto line = cell->face(f)->line(l);
+          if (count[key(line)] != 1)
+            continue;
+          dofs.resize(fe_.n_dofs_per_line() + 2 * fe_.n_dofs_per_vertex());
+          line->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            held = held && is_fixed(dof);
+        }
+    });
     return Utilities::MPI::min(held ? 1 : 0, comm) == 1;
   }
 
@@ -677,21 +669,15 @@ namespace RestShape
         std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size()),
           face_w(face_quadrature_.size());
         std::vector<Tensor2> grad_w(face_quadrature_.size());
-        for (const auto &cell : dof_handler_.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              support_labels.count(cell->material_id()))
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
-                {
-                  ffv.reinit(cell, f);
-                  ffv[u].get_function_values(d_ghost, face_d);
-                  ffv[u].get_function_values(w_ghost, face_w);
-                  ffv[u].get_function_gradients(w_ghost, grad_w);
-                  for (const unsigned int q : ffv.quadrature_point_indices())
-                    force -= k * (face_d[q] - face_w[q]) *
-                             rest_area(grad_w[q], ffv.normal_vector(q)) *
-                             ffv.JxW(q);
-                }
+        for_each_boundary_face(support_labels, [&](const auto &cell, auto f) {
+          ffv.reinit(cell, f);
+          ffv[u].get_function_values(d_ghost, face_d);
+          ffv[u].get_function_values(w_ghost, face_w);
+          ffv[u].get_function_gradients(w_ghost, grad_w);
+          for (const unsigned int q : ffv.quadrature_point_indices())
+            force -= k * (face_d[q] - face_w[q]) *
+                     rest_area(grad_w[q], ffv.normal_vector(q)) * ffv.JxW(q);
+        });
       }
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);
@@ -734,26 +720,20 @@ namespace RestShape
         std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size());
         std::vector<Tensor2>             grad_d(face_quadrature_.size());
         const Tensor2                    I = unit_symmetric_tensor<3>();
-        for (const auto &cell : dof_handler_.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              pressure_labels.count(cell->material_id()))
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
-                {
-                  ffv.reinit(cell, f);
-                  ffv[u].get_function_values(d_ghost, face_d);
-                  ffv[u].get_function_gradients(d_ghost, grad_d);
-                  for (const unsigned int q : ffv.quadrature_point_indices())
-                    {
-                      const Point<3>     &X = ffv.quadrature_point(q);
-                      const Tensor<1, 3> &N = ffv.normal_vector(q);
-                      force -=
-                        follower ?
-                          surface_load_->pressure(load, X + face_d[q]) *
-                            cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
-                          surface_load_->pressure(load, X) * N * ffv.JxW(q);
-                    }
-                }
+        for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
+          ffv.reinit(cell, f);
+          ffv[u].get_function_values(d_ghost, face_d);
+          ffv[u].get_function_gradients(d_ghost, grad_d);
+          for (const unsigned int q : ffv.quadrature_point_indices())
+            {
+              const Point<3>     &X = ffv.quadrature_point(q);
+              const Tensor<1, 3> &N = ffv.normal_vector(q);
+              force -= follower ?
+                         surface_load_->pressure(load, X + face_d[q]) *
+                           cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
+                         surface_load_->pressure(load, X) * N * ffv.JxW(q);
+            }
+        });
       }
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);

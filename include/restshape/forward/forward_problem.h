@@ -338,6 +338,21 @@ namespace RestShape
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.
     LinearSolverType
     resolve_linear_solver() const;
+    /// Call @p f(cell, face) for every boundary face of the locally owned
+    /// cells (with @p ghosts: of the owned and ghost cells) of @p labels.
+    template <typename Function>
+    void
+    for_each_boundary_face(const std::set<Label> &labels,
+                           Function             &&f,
+                           const bool             ghosts = false) const
+    {
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        if ((ghosts ? !cell->is_artificial() : cell->is_locally_owned()) &&
+            labels.count(cell->material_id()))
+          for (const unsigned int face : cell->face_indices())
+            if (cell->face(face)->at_boundary())
+              f(cell, face);
+    }
     struct ScratchData;
     struct CopyData;
     enum class Assemble
