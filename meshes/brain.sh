@@ -44,4 +44,8 @@ if [ "$level" = coarse ]; then
   # The skull of prm/brain_skull_contact.prm: 0.5 mm from the brain.
   "$build"/restshape-mesh --image "$labels" --out "$out/brain_$level.msh" $size \
     --skull-out "$out/brain_skull_0.5.off" --skull-gap 0.5 --skull-facet-size 5
+  # The skull of prm/brain_skull_cut.prm: it cuts 0.5 mm into the brain, as
+  # a segmented skull does.
+  "$build"/restshape-mesh --image "$labels" --out "$out/brain_$level.msh" $size \
+    --skull-out "$out/brain_skull_cut_0.5.off" --skull-gap -0.5 --skull-facet-size 5
 fi

@@ -24,4 +24,6 @@ awk -v a="$min_angle" 'BEGIN { exit !(a > 5) }' || fail "smallest dihedral angle
 grep -q "^skull .*triangles" "$out.log" || fail "no skull"
 cmp -s "$out/brain_skull_0.5.off" meshes/brain_skull_0.5.off ||
   fail "the regenerated 0.5 mm skull differs from meshes/brain_skull_0.5.off"
+cmp -s "$out/brain_skull_cut_0.5.off" meshes/brain_skull_cut_0.5.off ||
+  fail "the regenerated cutting skull differs from meshes/brain_skull_cut_0.5.off"
 echo "ok"

@@ -683,6 +683,16 @@ namespace RestShape
       "active node off it, in a converged state (the strict "
       "contact check). 0: the Newton tolerance times the "
       "body's size (round-off).");
+    prm.declare_entry(
+      "Pull tolerance",
+      "0",
+      Patterns::Double(0),
+      "The largest tensile contact pressure, in Pa, an active node may "
+      "carry in a converged state (the strict contact check): the "
+      "counterpart of Gap tolerance for the contact force. A node at the "
+      "edge of a contact zone on a triangulated obstacle can pull by a "
+      "little when held and go through when released; this accepts it "
+      "held. 0: the Newton tolerance times the load (round-off).");
     prm.declare_entry("Active set constant",
                       "100",
                       Patterns::Double(0),
@@ -741,6 +751,7 @@ namespace RestShape
     plane_changes        = prm.get_integer("Crease plane changes");
     max_outside_fraction = prm.get_double("Maximum outside fraction");
     gap_tolerance        = prm.get_double("Gap tolerance") * 1e-3;
+    pull_tolerance       = prm.get_double("Pull tolerance");
     prm.leave_subsection();
     if (!(active_set_constant > 0))
       throw InputError("",

@@ -219,6 +219,13 @@ namespace RestShape
     return shift;
   }
 
+  double
+  ContactProblem::node_force_tolerance(const Candidate &c,
+                                       const double     force_tolerance) const
+  {
+    return std::max(force_tolerance, parameters.pull_tolerance * c.area_lumped);
+  }
+
   ContactConditions
   ContactProblem::check_conditions(const VectorType &d,
                                    const VectorType &raw_residual,
@@ -250,7 +257,7 @@ namespace RestShape
         else
           lambda = {contact_force(c, raw_residual)};
         const double least = *std::min_element(lambda.begin(), lambda.end());
-        if (least < -force_tolerance)
+        if (least < -node_force_tolerance(c, force_tolerance))
           add(result.pulling, -least / c.area_lumped, x);
       }
     const MPI_Comm comm = communicator();
@@ -287,7 +294,7 @@ namespace RestShape
           {
             reaction(c, raw_residual, &lambda);
             for (unsigned int k = 0; k < lambda.size(); ++k)
-              if (lambda[k] < -force_tolerance)
+              if (lambda[k] < -node_force_tolerance(c, force_tolerance))
                 c.dropped |= 1u << k;
             if (c.dropped == 0)
               continue;
@@ -296,7 +303,8 @@ namespace RestShape
               continue; // some planes stay
             c.dropped = 0;
           }
-        else if (!(contact_force(c, raw_residual) < -force_tolerance))
+        else if (!(contact_force(c, raw_residual) <
+                   -node_force_tolerance(c, force_tolerance)))
           continue;
         else
           ++changed;

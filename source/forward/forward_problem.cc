@@ -501,7 +501,8 @@ namespace RestShape
 
   bool
   ForwardProblem::rest_shape_is_valid(const VectorType &rest,
-                                      unsigned int     &n_bad) const
+                                      unsigned int     &n_bad,
+                                      std::string      *where) const
   {
     VectorType ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = rest;
@@ -509,6 +510,7 @@ namespace RestShape
     std::vector<Tensor2>             grad_w(cell_quadrature.size());
     const FEValuesExtractors::Vector u(0);
     n_bad = 0;
+    std::string first;
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -517,11 +519,20 @@ namespace RestShape
           for (const Tensor2 &g : grad_w)
             if (!(determinant(Tensor2(unit_symmetric_tensor<3>()) + g) > 0))
               {
-                ++n_bad;
+                if (n_bad++ == 0)
+                  first =
+                    cell_location_text(cell->material_id(), cell->center());
                 break;
               }
         }
     n_bad = Utilities::MPI::sum(n_bad, comm);
+    if (where != nullptr && n_bad > 0)
+      for (const std::string &text : Utilities::MPI::all_gather(comm, first))
+        if (!text.empty())
+          {
+            *where = text;
+            break;
+          }
     return n_bad == 0;
   }
 

@@ -52,21 +52,26 @@ namespace RestShape
   // Newton's method with line search, inside load stepping.
 
   std::string
-  ForwardProblem::inverted_cells_text() const
+  cell_location_text(const types::material_id label, const Point<3> &center)
   {
-    const Point<3> &c = inverted_cells.center;
-    char            text[160];
+    char text[100];
     std::snprintf(text,
                   sizeof(text),
-                  "%u cell%s inverted (det F <= 0), e.g. label %u at "
-                  "(%.1f, %.1f, %.1f) mm of the mesh",
-                  inverted_cells.count,
-                  inverted_cells.count == 1 ? "" : "s",
-                  static_cast<unsigned int>(inverted_cells.label),
-                  1e3 * c[0],
-                  1e3 * c[1],
-                  1e3 * c[2]);
+                  "label %u at (%.1f, %.1f, %.1f) mm of the mesh",
+                  static_cast<unsigned int>(label),
+                  1e3 * center[0],
+                  1e3 * center[1],
+                  1e3 * center[2]);
     return text;
+  }
+
+  std::string
+  ForwardProblem::inverted_cells_text() const
+  {
+    return std::to_string(inverted_cells.count) +
+           (inverted_cells.count == 1 ? " cell" : " cells") +
+           " inverted (det F <= 0), e.g. " +
+           cell_location_text(inverted_cells.label, inverted_cells.center);
   }
 
 

@@ -365,6 +365,7 @@ namespace RestShape
 
         // Never a rest shape with an inverted or degenerate cell.
         unsigned int n_bad = 0;
+        std::string  where;
         if (!forward.rest_shape_is_valid(candidate, n_bad))
           {
             if (accelerated)
@@ -377,16 +378,16 @@ namespace RestShape
                 accelerated = false;
               }
             for (double beta = 0.5;
-                 !forward.rest_shape_is_valid(candidate, n_bad);
+                 !forward.rest_shape_is_valid(candidate, n_bad, &where);
                  beta /= 2)
               {
                 if (beta < 1. / 64)
                   return finish(
                     "every rest-shape update, even shortened 64 times, would "
                     "invert " +
-                    std::to_string(n_bad) + " cells (iteration " +
-                    std::to_string(result.iterations + 1) + ", error " +
-                    mm(stopping.last()) + ")");
+                    std::to_string(n_bad) + " cells, e.g. " + where +
+                    " (iteration " + std::to_string(result.iterations + 1) +
+                    ", error " + mm(stopping.last()) + ")");
                 candidate = w;
                 candidate.add(beta, f);
                 pcout << "  The update would invert " << n_bad

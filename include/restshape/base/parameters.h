@@ -205,6 +205,7 @@ namespace RestShape
     unsigned int    plane_changes = 6; // then a crease node's planes are fixed
     double max_outside_fraction   = 0.05; // of the candidates, before solving
     double gap_tolerance          = 0;    // m; 0: round-off
+    double pull_tolerance         = 0;    // Pa; 0: round-off
 
     bool
     enabled() const

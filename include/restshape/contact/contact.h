@@ -140,7 +140,8 @@ namespace RestShape
      * The contact conditions at the displacement @p d (ghosted) with the
      * raw residual @p raw_residual of that state, against the obstacle's
      * surface (ContactConditions). A pull counts if the node's force (or a
-     * held plane's) is below -@p force_tolerance (N).
+     * held plane's) is below -@p force_tolerance (N) and below -Contact/
+     * Pull tolerance times the node's area.
      */
     ContactConditions
     check_conditions(const VectorType &d,
@@ -152,10 +153,11 @@ namespace RestShape
      * heuristics of update_active_set() and thaw_if_adhesive() accept
      * small pulls and hold crease nodes on fixed planes): release every
      * node and held plane that pulls by more than @p force_tolerance
-     * (grazing nodes too: they come back only through the obstacle), let
-     * nodes on fixed planes that left the surface follow it again, and
-     * start a free phase of the active set (Free active-set updates) from
-     * there. Returns whether it changed anything (then Newton goes on).
+     * (and Contact/Pull tolerance times its area) (grazing nodes too: they come
+     * back only through the obstacle), let nodes on fixed planes that left the
+     * surface follow it again, and start a free phase of the active set (Free
+     * active-set updates) from there. Returns whether it changed anything (then
+     * Newton goes on).
      */
     bool
     enforce_conditions(const ContactConditions &violated,
@@ -325,6 +327,12 @@ namespace RestShape
     /// the mean plane's, if those were imposed instead).
     static double
     constrained_gap(const Candidate &c);
+    /// The pull (N) node @p c may carry in a converged state: the larger
+    /// of @p force_tolerance (round-off) and Contact/Pull tolerance times
+    /// its area.
+    double
+    node_force_tolerance(const Candidate &c,
+                         const double     force_tolerance) const;
     /// Let go of the held planes whose bits are set in @p mask.
     static void
     drop_planes(Candidate &c, const unsigned int mask);

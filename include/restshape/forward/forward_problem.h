@@ -90,6 +90,11 @@ namespace RestShape
     }
   };
 
+  /// "label 1 at (x, y, z) mm of the mesh": where a cell is (@p center in m).
+  std::string
+  cell_location_text(const dealii::types::material_id label,
+                     const dealii::Point<3>          &center);
+
   class ForwardProblem
   {
   public:
@@ -175,10 +180,13 @@ namespace RestShape
     /**
      * Check a rest displacement: false (with the number of bad cells) if
      * det(I + grad w) <= 0 at some quadrature point of a cell, i.e. the rest
-     * shape has inverted or degenerate cells.
+     * shape has inverted or degenerate cells; then @p where, if given, says
+     * where one of them is ("label 1 at (x, y, z) mm of the mesh").
      */
     bool
-    rest_shape_is_valid(const VectorType &rest, unsigned int &n_bad) const;
+    rest_shape_is_valid(const VectorType &rest,
+                        unsigned int     &n_bad,
+                        std::string      *where = nullptr) const;
 
     // --- discretisation ------------------------------------------------
     const dealii::DoFHandler<3> &
