@@ -397,8 +397,8 @@ namespace RestShape
                       "0.9 (|R_k|/|R_k-1|)^2, at most 0.1), but never looser "
                       "than what the Newton tolerance needs nor tighter than "
                       "Linear solver tolerance. false: Linear solver "
-                      "tolerance in every step. Measured on the brain: "
-                      "the same solution, linear solves 0.6-0.9x.");
+                      "tolerance in every step (the same solution, in more "
+                      "CG iterations; doc/benchmarks.md).");
     prm.declare_entry(
       "AMG update",
       "lagged",
@@ -410,19 +410,17 @@ namespace RestShape
       "matrices and smoothers recomputed (ML's ReComputePreconditioner). "
       "lagged: the AMG of an earlier step is used as it is until CG needs "
       "more than 1.5 times the iterations per decade of residual reduction "
-      "that it needed right after the build (or fails), then rebuilt. "
-      "Measured on the brain with Inexact Newton: linear solves 0.2-0.4x "
-      "of rebuild with the fixed tolerance, the same solution.");
+      "that it needed right after the build (or fails), then rebuilt "
+      "(the fastest of the three on the brain, doc/benchmarks.md).");
     prm.declare_entry(
       "AMG aggregation threshold",
       "0",
       Patterns::Double(0, 1),
       "cg-amg only. ML's aggregation threshold: when the AMG groups nodes "
       "into aggregates, couplings weaker than this (relative to the "
-      "diagonal) are dropped. 0 keeps every coupling. Measured on the "
-      "brain (doc/benchmarks.md section 2): 0 needs fewer CG iterations "
-      "than 0.02 (the value of deal.II's tutorials and RestShape's until "
-      "2026-11-25), more so the finer the mesh, the same solution.");
+      "diagonal) are dropped. 0 keeps every coupling, which needs fewer "
+      "CG iterations than deal.II's tutorials' 0.02 on the brain, more so "
+      "the finer the mesh (doc/benchmarks.md, section 2).");
     prm.declare_entry(
       "Tangent shift",
       "0",
@@ -433,11 +431,8 @@ namespace RestShape
       "scaled by (1 + mu) (Levenberg-Marquardt): mu = s after the first "
       "shortened step, 10 mu after each further one, mu / 10 after each "
       "full step (0 below s / 1000); a Newton solve that would need "
-      "mu > 1e4 fails (its load increment is halved). Measured: the 1.27M-DoF brain with "
-      "contact, which stalls near |R|/|f| 1e-4 with 0, converges in 23 "
-      "Newton steps with 1e-3, and so does its whole inverse; on the 48 P1 "
-      "stability cases 1e-3 converged in all, 0 in 47, at up to 1.26x the "
-      "Newton steps (doc/benchmarks.md).");
+      "mu > 1e4 fails (its load increment is halved). Try 1e-3 when "
+      "Newton stalls on a large mesh with contact (doc/benchmarks.md).");
     prm.declare_entry("Maximum load step halvings",
                       "10",
                       Patterns::Integer(0, 30),
