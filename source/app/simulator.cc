@@ -89,8 +89,14 @@ namespace RestShape
     pcout << "Mesh " << parameters.mesh.file << ": "
           << mesh->triangulation().n_global_active_cells()
           << (mesh->is_simplex() ? " tetrahedra" : " hexahedra") << ", labels";
-    for (const auto &[label, n] : mesh->label_counts())
-      pcout << ' ' << label << " (" << n << " coarse cells)";
+    // An atlas has hundreds of labels: then only their list.
+    constexpr std::size_t max_listed = 12;
+    if (mesh->label_counts().size() > max_listed)
+      pcout << ' ' << to_string(mesh->labels()) << " ("
+            << mesh->label_counts().size() << " labels)";
+    else
+      for (const auto &[label, n] : mesh->label_counts())
+        pcout << ' ' << label << " (" << n << " coarse cells)";
     pcout << std::endl;
     const auto [gap, where] = mesh->narrowest_gap();
     if (std::isfinite(gap))
@@ -101,21 +107,15 @@ namespace RestShape
   void
   Simulator::check_scene() const
   {
-    const std::set<Label> labels = mesh->labels();
-    const auto check = [&](const Label l, const std::string &parameter) {
-      if (!labels.count(l))
-        throw InputError(prm_file,
-                         parameter,
-                         "label " + std::to_string(l) +
-                           " is not a label of the mesh (labels: " +
-                           to_string(labels) + ")");
-    };
-    for (const auto &f : parameters.boundary.fixed_labels)
-      check(f.label, "Boundary conditions/Fixed labels");
-    for (const Label l : parameters.loads.pressure_labels)
-      check(l, "Loads/Pressure labels");
-    for (const Label l : parameters.contact.labels)
-      check(l, "Contact/Contact labels");
+    for (const LabelList &list : parameters.label_lists)
+      try
+        {
+          check_labels_exist(list, mesh->labels());
+        }
+      catch (const InputError &e)
+        {
+          throw e.in_file(prm_file);
+        }
     if (parameters.refinement.strategy ==
           RefinementParameters::Strategy::adaptive &&
         mesh->is_simplex())

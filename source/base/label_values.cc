@@ -21,6 +21,9 @@ namespace RestShape
       return items;
     }
 
+    /// The largest label a list may name.
+    constexpr long max_label = 65535;
+
     Label
     parse_label(const std::string &text, const std::string &parameter)
     {
@@ -35,13 +38,41 @@ namespace RestShape
         {
           pos = 0;
         }
-      if (pos != t.size() || t.empty() || value < 0 || value > 65535)
+      if (pos != t.size() || t.empty() || value < 0 || value > max_label)
         throw InputError("",
                          parameter,
                          "'" + t +
                            "' is not a label; expected a non-negative "
-                           "integer (a physical volume tag of the mesh)");
+                           "integer (a physical volume tag of the mesh) or "
+                           "a range such as '1-90'");
       return static_cast<Label>(value);
+    }
+
+    /// "7" -> [7, 7]; "1-90" -> [1, 90].
+    std::pair<Label, Label>
+    parse_label_range(const std::string &text, const std::string &parameter)
+    {
+      const std::string t    = dealii::Utilities::trim(text);
+      const auto        dash = t.find('-', 1);
+      if (dash == std::string::npos)
+        {
+          const Label l = parse_label(t, parameter);
+          return {l, l};
+        }
+      const Label first = parse_label(t.substr(0, dash), parameter);
+      const Label last  = parse_label(t.substr(dash + 1), parameter);
+      if (last < first)
+        throw InputError("",
+                         parameter,
+                         "'" + t + "': a range must run upwards, e.g. '1-90'");
+      return {first, last};
+    }
+
+    /// The label part of a list entry ("1-90" of "1-90:1500").
+    std::string
+    key_of(const std::string &item)
+    {
+      return dealii::Utilities::trim(item.substr(0, item.find(':')));
     }
   } // namespace
 
@@ -69,16 +100,25 @@ namespace RestShape
                                  "must be 'label:value'");
             result.value_for_all = parse_number(parameter, item);
           }
+        else if (key_of(item) == "*")
+          {
+            if (result.value_for_all)
+              throw InputError("", parameter, "the default '*' is given twice");
+            result.value_for_all =
+              parse_number(parameter, item.substr(colon + 1));
+          }
         else
           {
-            const Label label = parse_label(item.substr(0, colon), parameter);
-            if (result.per_label.count(label))
-              throw InputError("",
-                               parameter,
-                               "label " + std::to_string(label) +
-                                 " is given twice");
-            result.per_label[label] =
+            const auto [first, last] =
+              parse_label_range(item.substr(0, colon), parameter);
+            const double value =
               parse_number(parameter, item.substr(colon + 1));
+            for (long l = first; l <= long(last); ++l)
+              if (!result.per_label.emplace(Label(l), value).second)
+                throw InputError("",
+                                 parameter,
+                                 "label " + std::to_string(l) +
+                                   " is given twice");
           }
       }
     return result;
@@ -93,16 +133,17 @@ namespace RestShape
   double
   LabelValues::operator()(const Label label) const
   {
+    const auto it = per_label.find(label);
+    if (it != per_label.end())
+      return it->second;
     if (value_for_all)
       return *value_for_all;
-    const auto it = per_label.find(label);
-    if (it == per_label.end())
-      throw InputError("",
-                       parameter,
-                       "no value for label " + std::to_string(label) +
-                         " of the mesh; expected 'label:value' for every "
-                         "label of the mesh, or a single value for all");
-    return it->second;
+    throw InputError("",
+                     parameter,
+                     "no value for label " + std::to_string(label) +
+                       " of the mesh; expected 'label:value' for every "
+                       "label of the mesh, a default '*:value', or a "
+                       "single value for all");
   }
 
   std::vector<std::pair<Label, double>>
@@ -122,8 +163,8 @@ namespace RestShape
     for (const std::string &item : split_list(text))
       {
         FixedLabel fixed;
-        const auto colon = item.find(':');
-        fixed.label      = parse_label(item.substr(0, colon), parameter);
+        const auto colon         = item.find(':');
+        const auto [first, last] = parse_label_range(key_of(item), parameter);
         if (colon == std::string::npos)
           fixed.components = {{true, true, true}};
         else
@@ -148,7 +189,11 @@ namespace RestShape
                 fixed.components[c - 'x'] = true;
               }
           }
-        result.push_back(fixed);
+        for (long l = first; l <= long(last); ++l)
+          {
+            fixed.label = Label(l);
+            result.push_back(fixed);
+          }
       }
     return result;
   }
@@ -158,16 +203,62 @@ namespace RestShape
   {
     std::set<Label> labels;
     for (const std::string &item : split_list(text))
-      labels.insert(parse_label(item, parameter));
+      {
+        const auto [first, last] = parse_label_range(item, parameter);
+        for (long l = first; l <= long(last); ++l)
+          labels.insert(Label(l));
+      }
     return labels;
+  }
+
+  void
+  check_labels_exist(const LabelList &list, const std::set<Label> &labels)
+  {
+    for (const std::string &item : split_list(list.text))
+      {
+        const std::string key = key_of(item);
+        // A single value for all labels, or the default.
+        if (key == "*" || (list.values && item.find(':') == std::string::npos))
+          continue;
+        const auto [first, last] = parse_label_range(key, list.parameter);
+        if (labels.lower_bound(first) == labels.upper_bound(last))
+          throw InputError("",
+                           list.parameter,
+                           (first == last ? "label " : "no label in ") + key +
+                             (first == last ? " is not a label" :
+                                              " is a label") +
+                             " of the mesh (labels: " + to_string(labels) +
+                             ")");
+      }
   }
 
   std::string
   to_string(const std::set<Label> &labels)
   {
-    std::string text;
+    // Long lists (an atlas has hundreds of labels) are shortened.
+    constexpr unsigned int               max_runs = 12;
+    std::vector<std::pair<Label, Label>> runs;
     for (const Label l : labels)
-      text += (text.empty() ? "" : ", ") + std::to_string(l);
+      if (!runs.empty() && runs.back().second + 1 == l)
+        runs.back().second = l;
+      else
+        runs.emplace_back(l, l);
+    std::string text;
+    for (unsigned int i = 0; i < runs.size(); ++i)
+      {
+        if (i == max_runs - 2 && runs.size() > max_runs)
+          {
+            text += ", ... (" + std::to_string(labels.size()) + " labels), ";
+            i = runs.size() - 1;
+          }
+        else if (!text.empty())
+          text += ", ";
+        const auto [first, last] = runs[i];
+        text += std::to_string(first) +
+                (last == first     ? "" :
+                 last == first + 1 ? ", " + std::to_string(last) :
+                                     "-" + std::to_string(last));
+      }
     return text;
   }
 } // namespace RestShape

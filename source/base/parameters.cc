@@ -161,19 +161,23 @@ namespace RestShape
                       Patterns::Anything(),
                       "Young's modulus in Pa: one value for all labels, or "
                       "'label:value, label:value' with every label of the "
-                      "mesh listed. Must be > 0.");
+                      "mesh given a value; a label may be a range "
+                      "('1-90:1500') and '*:value' gives every label not "
+                      "listed. Must be > 0.");
     prm.declare_entry("Poisson's ratio",
                       "0.45",
                       Patterns::Anything(),
                       "Poisson's ratio, in (-1, 0.5): one value or "
-                      "'label:value' list.");
+                      "'label:value' list (ranges and '*' as for Young's "
+                      "modulus).");
     prm.declare_entry("Density",
                       "1040",
                       Patterns::Anything(),
                       "Density in kg/m^3 of the tissue as imaged (the mass "
                       "of every cell is taken from the mesh geometry and "
                       "kept when the rest shape changes): one value or "
-                      "'label:value' list. Must be >= 0.");
+                      "'label:value' list (ranges and '*' as for Young's "
+                      "modulus). Must be >= 0.");
     prm.leave_subsection();
   }
 
@@ -188,29 +192,31 @@ namespace RestShape
     density = LabelValues::parse(prm.get("Density"), "Materials/Density");
     prm.leave_subsection();
 
-    const auto where = [](const Label l) {
-      return l == dealii::numbers::invalid_material_id ?
-               std::string(" (all labels)") :
-               " for label " + std::to_string(l);
+    const auto where = [](const LabelValues &values, const Label l) {
+      if (l != dealii::numbers::invalid_material_id)
+        return " for label " + std::to_string(l);
+      return std::string(values.per_label.empty() ? " (all labels)" :
+                                                    " (the default '*')");
     };
     for (const auto &[label, E] : youngs_modulus.listed())
       if (!(E > 0))
         throw InputError("",
                          "Materials/Young's modulus",
-                         "E = " + number_text(E) + " Pa" + where(label) +
-                           "; expected E > 0");
+                         "E = " + number_text(E) + " Pa" +
+                           where(youngs_modulus, label) + "; expected E > 0");
     for (const auto &[label, nu] : poissons_ratio.listed())
       if (!(nu > -1 && nu < 0.5))
         throw InputError("",
                          "Materials/Poisson's ratio",
-                         "nu = " + number_text(nu) + where(label) +
+                         "nu = " + number_text(nu) +
+                           where(poissons_ratio, label) +
                            "; expected -1 < nu < 0.5");
     for (const auto &[label, rho] : density.listed())
       if (!(rho >= 0))
         throw InputError("",
                          "Materials/Density",
                          "rho = " + number_text(rho) + " kg/m^3" +
-                           where(label) + "; expected rho >= 0");
+                           where(density, label) + "; expected rho >= 0");
   }
 
   void
@@ -223,7 +229,8 @@ namespace RestShape
                       "Labels whose nodes are fixed (zero displacement): "
                       "'label' fixes all components of every node of the "
                       "cells with that label, 'label:xy' only the listed "
-                      "components. Example: '3, 5:xy'.");
+                      "components; a label may be a range. Example: "
+                      "'3, 5:xy, 7-9'.");
     prm.declare_entry("Elastic support stiffness",
                       "0",
                       Patterns::Double(),
@@ -907,6 +914,20 @@ namespace RestShape
     prestress_comparison.parse_parameters(prm);
     // The fluid level is given in the mesh's length unit.
     loads.fluid_level *= mesh.length_unit;
+    const auto list = [&](const std::string &section,
+                          const std::string &entry,
+                          const bool         values) {
+      prm.enter_subsection(section);
+      label_lists.push_back({section + "/" + entry, prm.get(entry), values});
+      prm.leave_subsection();
+    };
+    for (const std::string entry :
+         {"Young's modulus", "Poisson's ratio", "Density"})
+      list("Materials", entry, true);
+    list("Boundary conditions", "Fixed labels", false);
+    list("Boundary conditions", "Elastic support labels", false);
+    list("Loads", "Pressure labels", false);
+    list("Contact", "Contact labels", false);
     if (prestress_comparison.enabled && !inverse.enabled)
       throw InputError("",
                        "Prestress comparison/Enabled",

@@ -1,4 +1,5 @@
-// Parsing of per-label lists such as "1:1500, 2:10000" or "3, 5:xy".
+// Parsing of per-label lists such as "1:1500, 2:10000", "1-90:1500, *:2000"
+// or "3, 5:xy".
 #ifndef restshape_label_values_h
 #define restshape_label_values_h
 
@@ -17,8 +18,9 @@ namespace RestShape
 
   /**
    * A value per label: either "value" (the same for every label) or a list
-   * "label:value, label:value". Parse errors throw InputError naming
-   * @p parameter.
+   * "label:value, label:value" whose labels may be ranges ("1-90:1500") and
+   * may end with a default for every other label ("*:1500"). Parse errors
+   * throw InputError naming @p parameter.
    */
   class LabelValues
   {
@@ -37,6 +39,7 @@ namespace RestShape
     std::vector<std::pair<Label, double>>
     listed() const;
 
+    /// The single value, or the default ("*:value").
     std::optional<double>   value_for_all;
     std::map<Label, double> per_label;
     std::string             parameter;
@@ -49,15 +52,33 @@ namespace RestShape
     std::array<bool, 3> components;
   };
 
-  /// Parse "3, 5:xy" (empty allowed).
+  /// Parse "3, 5:xy, 7-9" (empty allowed).
   std::vector<FixedLabel>
   parse_fixed_labels(const std::string &text, const std::string &parameter);
 
-  /// Parse "1, 2, 7" (empty allowed).
+  /// Parse "1, 2, 7-9" (empty allowed).
   std::set<Label>
   parse_label_set(const std::string &text, const std::string &parameter);
 
-  /// "1, 2, 7" for messages.
+  /// A label list as written in a parameter, for the check against the mesh.
+  struct LabelList
+  {
+    std::string parameter; // "Materials/Young's modulus"
+    std::string text;      // "1-90:1500, *:2000"
+    /// A LabelValues list: a lone entry without ':' is a value for all.
+    bool values = false;
+  };
+
+  /**
+   * Check the labels of a (parsed, valid) list against the labels of the
+   * mesh: a single label must be one of them, a range must hold at least
+   * one; throws InputError naming the parameter, the entry and the mesh's
+   * labels otherwise.
+   */
+  void
+  check_labels_exist(const LabelList &list, const std::set<Label> &labels);
+
+  /// "1-4, 7" for messages: runs of consecutive labels as ranges.
   std::string
   to_string(const std::set<Label> &labels);
 } // namespace RestShape

@@ -271,6 +271,9 @@ namespace RestShape
     ContactParameters             contact;
     InverseParameters             inverse;
     PrestressComparisonParameters prestress_comparison;
+    /// Every parameter that names labels, as written (checked against the
+    /// mesh's labels by the Simulator).
+    std::vector<LabelList> label_lists;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
