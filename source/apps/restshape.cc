@@ -2,7 +2,7 @@
 //
 //   restshape SCENE.prm                     run a scene
 //   restshape --set 'Sub/Param=value' ...   override parameters (repeatable)
-//   restshape --print-parameters            all parameters with defaults
+//   restshape --print-parameters [SUBSECTION]  parameters with defaults
 //
 // Exit codes: 0 success, 1 bad input, 2 a solver did not converge,
 // 3 internal error.
@@ -12,11 +12,13 @@
 
 #include <restshape/app/simulator.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
 #include <restshape/forward/linear_solver.h>
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 using namespace dealii;
 using namespace RestShape;
@@ -25,7 +27,7 @@ namespace
 {
   const char *usage =
     "usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm\n"
-    "       restshape --print-parameters\n";
+    "       restshape --print-parameters [SUBSECTION]\n";
 
   /// Apply "Sub/Sub/Parameter=value" to @p prm.
   void
@@ -41,6 +43,7 @@ namespace
     const auto        parts = Utilities::split_string_list(path, '/');
     if (parts.size() < 2)
       throw InputError("--set", path, "expected 'Subsection/Parameter=value'");
+    ParameterNames(prm).check_entry(path);
     for (unsigned int i = 0; i + 1 < parts.size(); ++i)
       prm.enter_subsection(parts[i]);
     try
@@ -55,6 +58,29 @@ namespace
       }
     for (unsigned int i = 0; i + 1 < parts.size(); ++i)
       prm.leave_subsection();
+  }
+
+  /// Every parameter, or those of the top-level subsection @p only.
+  void
+  print_parameters(const ParameterHandler &prm, const std::string &only)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::PRM);
+    if (only.empty())
+      {
+        std::cout << text.str();
+        return;
+      }
+    std::istringstream in(text.str());
+    bool               inside = false;
+    for (std::string line; std::getline(in, line);)
+      {
+        inside = inside || line == "subsection " + only;
+        if (inside)
+          std::cout << line << '\n';
+        if (inside && line == "end")
+          break;
+      }
   }
 } // namespace
 
@@ -80,8 +106,12 @@ main(int argc, char **argv)
           const std::string arg = argv[i];
           if (arg == "--print-parameters")
             {
+              const std::string only =
+                i + 1 < argc && argv[i + 1][0] != '-' ? argv[i + 1] : "";
+              if (!only.empty())
+                ParameterNames(prm).check_top_subsection(only);
               if (root)
-                prm.print_parameters(std::cout, ParameterHandler::PRM);
+                print_parameters(prm, only);
               return 0;
             }
           else if (arg == "--help" || arg == "-h")
@@ -122,6 +152,8 @@ main(int argc, char **argv)
         }
       catch (const std::exception &exc)
         {
+          // Misspelled names: the file, line and the nearest known names.
+          ParameterNames(prm).check_file(prm_file);
           throw InputError(prm_file, "", one_line_message(exc));
         }
       for (const std::string &o : overrides)
