@@ -54,8 +54,8 @@ using namespace RestShape;
 
 namespace
 {
-  constexpr std::uint8_t cerebrum = 1, tumour = 2, cerebellum = 3,
-                         brainstem = 4, unknown = 255;
+  constexpr ImageLabel cerebrum = 1, tumour = 2, cerebellum = 3, brainstem = 4,
+                       unknown = 255;
 
   /// 6-neighbours of voxel v of @p image (those inside the grid).
   template <typename F>
@@ -219,9 +219,9 @@ main(int argc, char **argv)
         for (unsigned int j = 0; j < brain.size[1]; ++j)
           for (unsigned int i = 0; i < brain.size[0]; ++i)
             {
-              const std::size_t  v = brain.index(i, j, k);
-              const std::uint8_t a = atlas.labels[v];
-              std::uint8_t      &l = labels.labels[v];
+              const std::size_t v = brain.index(i, j, k);
+              const ImageLabel  a = atlas.labels[v];
+              ImageLabel       &l = labels.labels[v];
               if (!in[v])
                 l = 0;
               else if (a >= 91 && a <= 116)
@@ -248,7 +248,7 @@ main(int argc, char **argv)
             }
 
       // One connected piece per label.
-      for (const std::uint8_t label : {cerebrum, tumour, cerebellum, brainstem})
+      for (const ImageLabel label : {cerebrum, tumour, cerebellum, brainstem})
         {
           std::vector<bool> mine(n);
           for (std::size_t v = 0; v < n; ++v)

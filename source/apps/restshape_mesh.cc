@@ -221,8 +221,8 @@ main(int argc, char **argv)
               std::filesystem::path(file).parent_path().string(),
             file == out ? "--out" : "--skull-out");
 
-      const LabelledImage image = read_labelled_image(image_file, "--image");
-      const auto          h     = image.spacing();
+      LabelledImage image = read_labelled_image(image_file, "--image");
+      const auto    h     = image.spacing();
       std::cout << std::setprecision(4) << "image " << image_file << ": "
                 << image.size[0] << "x" << image.size[1] << "x" << image.size[2]
                 << " voxels of " << h[0] << "x" << h[1] << "x" << h[2]
@@ -233,14 +233,17 @@ main(int argc, char **argv)
       std::cout << std::endl;
 
       dealii::Timer timer;
-      LabelledImage meshed_image = image;
+      // The closed image is meshed; the skull comes from the image as read
+      // (a copy only when both are asked for: an atlas is large).
+      LabelledImage closed_image;
       if (close_sulci > 0)
         {
-          const ClosedVoxels closed =
-            close_labelled_image(meshed_image, close_sulci);
           std::size_t n_labelled = 0;
           for (const auto &[label, count] : image.label_counts())
             n_labelled += count;
+          closed_image = skull_out.empty() ? std::move(image) : image;
+          const ClosedVoxels closed =
+            close_labelled_image(closed_image, close_sulci);
           std::cout << "closed sulci narrower than about " << 2 * close_sulci
                     << " mm (--close-sulci " << close_sulci
                     << "): " << closed.n_added << " voxels, "
@@ -250,6 +253,8 @@ main(int argc, char **argv)
                     << timer.wall_time() << " s" << std::endl;
           timer.restart();
         }
+      const LabelledImage &meshed_image =
+        close_sulci > 0 ? closed_image : image;
       MeshDescription mesh = mesh_labelled_image(meshed_image, options);
       if (mesh.cells.empty())
         throw InputError(

@@ -21,9 +21,6 @@ namespace RestShape
       return items;
     }
 
-    /// The largest label a list may name.
-    constexpr long max_label = 65535;
-
     Label
     parse_label(const std::string &text, const std::string &parameter)
     {

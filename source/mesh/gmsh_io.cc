@@ -2,6 +2,7 @@
 #include <gmsh.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/label_values.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_transforms.h>
 #include <unistd.h>
@@ -176,11 +177,12 @@ namespace RestShape
             std::vector<int> physical;
             gmsh::model::getPhysicalGroupsForEntity(dim, entity, physical);
             const int label = physical.empty() ? entity : physical[0];
-            if (label < 0 || label > 65535)
+            if (label < 0)
               throw InputError(file,
                                file_parameter,
                                "volume tag " + std::to_string(label) +
-                                 " is not a valid label; expected 0..65535");
+                                 " is not a valid label; expected 0.." +
+                                 std::to_string(max_label));
 
             std::vector<int>                      types;
             std::vector<std::vector<std::size_t>> element_tags, element_nodes;

@@ -55,6 +55,33 @@ namespace RestShape
       std::array<double, 3> h;
     };
 
+    /// The labels as a CGAL image in the smallest unsigned word that holds
+    /// them (an atlas with labels up to 255 takes a byte per voxel).
+    _image *
+    cgal_labels(const LabelledImage &image, const std::array<double, 3> &h)
+    {
+      const ImageLabel   top   = image.max_label();
+      const unsigned int bytes = top <= 255 ? 1 : top <= 65535 ? 2 : 4;
+      _image            *raw   = ::_createImage(image.size[0],
+                                   image.size[1],
+                                   image.size[2],
+                                   1,
+                                   h[0],
+                                   h[1],
+                                   h[2],
+                                   bytes,
+                                   WK_FIXED,
+                                   SGN_UNSIGNED);
+      for (std::size_t v = 0; v < image.labels.size(); ++v)
+        if (bytes == 1)
+          static_cast<std::uint8_t *>(raw->data)[v] = image.labels[v];
+        else if (bytes == 2)
+          static_cast<std::uint16_t *>(raw->data)[v] = image.labels[v];
+        else
+          static_cast<std::uint32_t *>(raw->data)[v] = image.labels[v];
+      return raw;
+    }
+
     /// Mesh_3 draws random numbers: a fixed seed makes the mesh reproducible.
     void
     seed_cgal(const unsigned int seed)
@@ -70,18 +97,7 @@ namespace RestShape
     const ToWorld to_world(image);
     const auto   &h = to_world.h;
 
-    _image *raw = ::_createImage(image.size[0],
-                                 image.size[1],
-                                 image.size[2],
-                                 1,
-                                 h[0],
-                                 h[1],
-                                 h[2],
-                                 1,
-                                 WK_FIXED,
-                                 SGN_UNSIGNED);
-    std::memcpy(raw->data, image.labels.data(), image.labels.size());
-    const CGAL::Image_3 cgal_image(raw);
+    const CGAL::Image_3 cgal_image(cgal_labels(image, h));
 
     const Domain domain = Domain::create_labeled_image_mesh_domain(
       cgal_image, params::relative_error_bound = 1e-6);

@@ -138,13 +138,13 @@ namespace RestShape
     const auto &s = image.size;
     while (!unlabelled.empty())
       {
-        std::vector<std::pair<std::size_t, std::uint8_t>> assigned;
-        std::vector<std::size_t>                          remaining;
+        std::vector<std::pair<std::size_t, ImageLabel>> assigned;
+        std::vector<std::size_t>                        remaining;
         for (const std::size_t index : unlabelled)
           {
             const unsigned int i = index % s[0], j = (index / s[0]) % s[1],
                                k = index / (std::size_t(s[0]) * s[1]);
-            std::map<std::uint8_t, unsigned int> count;
+            std::map<ImageLabel, unsigned int> count;
             for (int dk = -1; dk <= 1; ++dk)
               for (int dj = -1; dj <= 1; ++dj)
                 for (int di = -1; di <= 1; ++di)
@@ -154,7 +154,7 @@ namespace RestShape
                     if (ii < 0 || jj < 0 || kk < 0 || ii >= int(s[0]) ||
                         jj >= int(s[1]) || kk >= int(s[2]))
                       continue;
-                    const std::uint8_t label =
+                    const ImageLabel label =
                       image.labels[image.index(ii, jj, kk)];
                     if (label != 0)
                       ++count[label];

@@ -4,6 +4,7 @@
 #include <restshape/mesher/labelled_image.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -40,10 +41,16 @@ namespace RestShape
   LabelledImage::label_counts() const
   {
     std::map<unsigned int, std::size_t> counts;
-    for (const std::uint8_t l : labels)
+    for (const ImageLabel l : labels)
       if (l != 0)
         ++counts[l];
     return counts;
+  }
+
+  ImageLabel
+  LabelledImage::max_label() const
+  {
+    return labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
   }
 
   namespace
@@ -134,12 +141,16 @@ namespace RestShape
       {
         const double value =
           scaled ? nim->scl_slope * values[v] + nim->scl_inter : values[v];
-        if (!(value >= 0 && value <= 255 && value == std::round(value)))
-          throw fail("voxel " + std::to_string(v) + " holds " +
-                     number_text(value) +
+        if (!(value >= 0 && value <= max_image_label &&
+              value == std::round(value)))
+          throw fail("voxel (" + std::to_string(v % nim->nx) + ", " +
+                     std::to_string((v / nim->nx) % nim->ny) + ", " +
+                     std::to_string(v / (std::size_t(nim->nx) * nim->ny)) +
+                     ") holds " + number_text(value) +
                      "; expected whole-number labels from 0 (background) "
-                     "to 255");
-        image.labels[v] = static_cast<std::uint8_t>(value);
+                     "to " +
+                     std::to_string(max_image_label));
+        image.labels[v] = static_cast<ImageLabel>(value);
       }
 
     const nifti_dmat44 *map = nullptr;
@@ -166,7 +177,7 @@ namespace RestShape
                  "expected positive voxel sizes");
     if (image.label_counts().empty())
       throw fail("the image holds no label (every voxel is 0); expected "
-                 "labelled tissue (labels 1 to 255)");
+                 "labelled tissue (labels > 0)");
     return image;
   }
 
@@ -178,11 +189,21 @@ namespace RestShape
     const int64_t dims[8] = {
       3, image.size[0], image.size[1], image.size[2], 1, 1, 1, 1};
     nifti_set_debug_level(0);
+    const ImageLabel                           top  = image.max_label();
+    const int                                  type = top <= 255   ? DT_UINT8 :
+                                                      top <= 65535 ? DT_UINT16 :
+                                                                     DT_UINT32;
     std::unique_ptr<nifti_image, NiftiDeleter> nim(
-      nifti_make_new_nim(dims, DT_UINT8, 1));
+      nifti_make_new_nim(dims, type, 1));
     if (!nim)
       throw InputError(file, parameter, "cannot allocate the image");
-    std::memcpy(nim->data, image.labels.data(), image.labels.size());
+    for (std::size_t v = 0; v < image.labels.size(); ++v)
+      if (type == DT_UINT8)
+        static_cast<std::uint8_t *>(nim->data)[v] = image.labels[v];
+      else if (type == DT_UINT16)
+        static_cast<std::uint16_t *>(nim->data)[v] = image.labels[v];
+      else
+        static_cast<std::uint32_t *>(nim->data)[v] = image.labels[v];
     nim->nifti_type = NIFTI_FTYPE_NIFTI1_1;
     const auto h    = image.spacing();
     nim->dx = nim->pixdim[1] = h[0];

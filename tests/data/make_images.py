@@ -4,13 +4,20 @@
 #                      shifted: label 1 a ball of radius 18 mm around
 #                      (16, 4, 34) mm, label 2 a ball of radius 8 mm inside it
 #   empty_labels.nii   8^3 voxels, all 0
+#   atlas_int16.nii    the sphere as int16 with atlas-like labels above 255:
+#                      300 for the outer ball, 2035 for the inner one
+#   negative_label.nii int16, 8^3 voxels, label 5 with one voxel -3
+#   fractional_label.nii float32, 8^3 voxels, label 2 with one voxel 1.5
 import struct
 
-def write(path, n, spacing, srow, values):
+TYPES = {'uint8': (2, 8, 'B'), 'int16': (4, 16, 'h'), 'float32': (16, 32, 'f')}
+
+def write(path, n, spacing, srow, values, kind='uint8'):
+    code, bits, fmt = TYPES[kind]
     h = bytearray(348)
     struct.pack_into('<i', h, 0, 348)
     struct.pack_into('<8h', h, 40, 3, n, n, n, 1, 1, 1, 1)
-    struct.pack_into('<hh', h, 70, 2, 8)  # uint8
+    struct.pack_into('<hh', h, 70, code, bits)
     struct.pack_into('<8f', h, 76, 1, spacing, spacing, spacing, 1, 1, 1, 1)
     struct.pack_into('<f', h, 108, 352)
     struct.pack_into('<f', h, 112, 1)
@@ -20,7 +27,7 @@ def write(path, n, spacing, srow, values):
         struct.pack_into('<4f', h, 280 + 16 * r, *srow[r])
     h[344:348] = b'n+1\0'
     with open(path, 'wb') as f:
-        f.write(h + bytes(4) + bytes(values))
+        f.write(h + bytes(4) + struct.pack('<%d%s' % (len(values), fmt), *values))
 
 n, s = 24, 2.0
 srow = [[-s, 0, 0, 40.0], [0, s, 0, -20.0], [0, 0, s, 10.0]]
@@ -34,3 +41,12 @@ for k in range(n):
             values.append(2 if r <= 8 else 1 if r <= 18 else 0)
 write('tests/data/sphere_labels.nii', n, s, srow, values)
 write('tests/data/empty_labels.nii', 8, 1.0, [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]], [0] * 512)
+write('tests/data/atlas_int16.nii', n, s, srow,
+      [{0: 0, 1: 300, 2: 2035}[v] for v in values], 'int16')
+small = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]
+block = [5] * 512
+block[3 + 8 * (2 + 8 * 1)] = -3
+write('tests/data/negative_label.nii', 8, 1.0, small, block, 'int16')
+block = [2.0] * 512
+block[7] = 1.5
+write('tests/data/fractional_label.nii', 8, 1.0, small, block, 'float32')

@@ -15,6 +15,8 @@
 namespace RestShape
 {
   using Label = dealii::types::material_id;
+  /// The largest label: a gmsh physical tag is a signed int.
+  constexpr long max_label = 2147483647;
 
   /**
    * A value per label: either "value" (the same for every label) or a list

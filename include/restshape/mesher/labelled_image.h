@@ -6,6 +6,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <restshape/base/label_values.h>
+
 #include <array>
 #include <cstdint>
 #include <map>
@@ -14,6 +16,11 @@
 
 namespace RestShape
 {
+  /// A voxel's label: 0 background, up to max_label (the largest label a
+  /// mesh and a scene can carry).
+  using ImageLabel                     = std::uint32_t;
+  constexpr ImageLabel max_image_label = max_label;
+
   struct LabelledImage
   {
     /// Voxels along i, j, k.
@@ -25,7 +32,11 @@ namespace RestShape
     /// NIfTI xform code of that map (1 scanner, 2 aligned, 3 Talairach, 4 MNI).
     int xform_code = 1;
     /// Labels (0 = background), i fastest, as stored in the file.
-    std::vector<std::uint8_t> labels;
+    std::vector<ImageLabel> labels;
+
+    /// The largest label.
+    ImageLabel
+    max_label() const;
 
     std::size_t
     index(const unsigned int i,
@@ -51,14 +62,16 @@ namespace RestShape
   /**
    * Read a labelled image (.nii or .nii.gz). Integer data types up to 32
    * bits, and floating-point data holding whole numbers, are accepted;
-   * labels must lie in 0..255. Throws InputError naming @p file and
-   * @p parameter for a missing or unreadable file, a non-3d image, labels
-   * out of range or an image without any non-zero label.
+   * labels must lie in 0..max_image_label. Throws InputError naming @p file
+   * and @p parameter for a missing or unreadable file, a non-3d image, a
+   * negative or fractional or too large label (naming the voxel) or an
+   * image without any non-zero label.
    */
   LabelledImage
   read_labelled_image(const std::string &file, const std::string &parameter);
 
-  /// Write @p image as uint8 NIfTI-1 (.nii or .nii.gz) with its map as sform.
+  /// Write @p image as NIfTI-1 (.nii or .nii.gz) with its map as sform, in
+  /// the smallest unsigned type that holds its labels (uint8, uint16, ...).
   /// Written under a temporary name and renamed into place.
   void
   write_labelled_image(const LabelledImage &image,
