@@ -54,6 +54,10 @@ namespace RestShape
   double
   length_unit_in_metres(const std::string &name, const std::string &parameter);
 
+  /// Parse "x, y, z" (three finite numbers); InputError naming @p parameter.
+  dealii::Tensor<1, 3>
+  parse_vector(const std::string &text, const std::string &parameter);
+
   struct MeshParameters
   {
     std::string  file;

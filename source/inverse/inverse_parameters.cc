@@ -1,0 +1,132 @@
+// The parameters of subsections Inverse problem and Prestress comparison.
+#include <deal.II/base/utilities.h>
+
+#include <restshape/base/input_error.h>
+#include <restshape/base/parameters.h>
+
+#include <cmath>
+
+namespace RestShape
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  void
+  InverseParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Inverse problem");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Compute the rest shape: the stress-free shape whose "
+                      "equilibrium under the loads, supports and contact is "
+                      "the mesh geometry (the target, e.g. the segmented "
+                      "image). The iteration of Sellier 2011 / Morin et al. "
+                      "2015: X_rest <- X_rest + (X_target - X_equilibrium).");
+    prm.declare_entry("Error measure",
+                      "mean",
+                      Patterns::Selection("mean|max"),
+                      "Error of an iteration over all nodes: the mean (Morin "
+                      "et al.) or the max (Sellier) of |X_target - "
+                      "X_equilibrium|.");
+    prm.declare_entry("Tolerance",
+                      "0.01",
+                      Patterns::Double(0),
+                      "The iteration has converged when the error measure is "
+                      "at most this, in mm (and the largest nodal error at "
+                      "most Maximum error tolerance).");
+    prm.declare_entry("Maximum error tolerance",
+                      "",
+                      Patterns::Anything(),
+                      "Bound on the largest nodal error |X_target - "
+                      "X_equilibrium| at convergence, in mm, so that single "
+                      "nodes cannot lag behind a small mean. Empty: 10 times "
+                      "Tolerance.");
+    prm.declare_entry("Maximum iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Rest-shape updates before the iteration stops "
+                      "unconverged.");
+    prm.declare_entry("Acceleration",
+                      "anderson",
+                      Patterns::Selection("none|anderson"),
+                      "none: the paper's update. anderson: Anderson "
+                      "acceleration of the same fixed point (safeguarded: a "
+                      "step that makes the error worse or would invert a "
+                      "cell falls back to the plain update).");
+    prm.declare_entry("Anderson depth",
+                      "5",
+                      Patterns::Integer(1, 20),
+                      "Number of previous iterates Anderson acceleration "
+                      "uses.");
+    prm.leave_subsection();
+  }
+
+  void
+  InverseParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Inverse problem");
+    enabled = prm.get_bool("Enabled");
+    measure = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
+    tolerance = prm.get_double("Tolerance") * 1e-3;
+    {
+      const std::string text =
+        dealii::Utilities::trim(prm.get("Maximum error tolerance"));
+      constexpr double default_ratio = 10;
+      max_tolerance                  = default_ratio * tolerance;
+      if (!text.empty())
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(text.c_str(), &end);
+          if (end == text.c_str() || *end != '\0' || !(value > 0))
+            throw InputError("",
+                             "Inverse problem/Maximum error tolerance",
+                             "'" + text +
+                               "': expected a positive length in mm, or "
+                               "nothing for 10 times Tolerance");
+          max_tolerance = value * 1e-3;
+        }
+    }
+    max_iterations = prm.get_integer("Maximum iterations");
+    acceleration   = prm.get("Acceleration") == "none" ? Acceleration::none :
+                                                         Acceleration::anderson;
+    anderson_depth = prm.get_integer("Anderson depth");
+    prm.leave_subsection();
+    if (enabled && !(tolerance > 0))
+      throw InputError("",
+                       "Inverse problem/Tolerance",
+                       "expected a positive tolerance in mm");
+  }
+
+  void
+  PrestressComparisonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Prestress comparison");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "After the inverse problem, apply the same extra body "
+                      "force to (1) the pre-stressed model (its equilibrium "
+                      "under the scene's loads) and (2) the model that "
+                      "starts stress-free from the mesh geometry (no other "
+                      "load), as in Table 1 of Morin et al. 2015; write mean "
+                      "and max displacement of each to "
+                      "prestress_comparison.csv.");
+    prm.declare_entry("Extra body force",
+                      "0, 9.81, 0",
+                      Patterns::Anything(),
+                      "The extra acceleration field in m/s^2 ('x, y, z'), "
+                      "added to gravity for model (1).");
+    prm.leave_subsection();
+  }
+
+  void
+  PrestressComparisonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Prestress comparison");
+    enabled            = prm.get_bool("Enabled");
+    extra_acceleration = parse_vector(prm.get("Extra body force"),
+                                      "Prestress comparison/Extra body force");
+    prm.leave_subsection();
+  }
+} // namespace RestShape
