@@ -78,8 +78,9 @@ namespace RestShape
   ContactProblem::progress_text() const
   {
     return ", contact " + std::to_string(n_active()) + " active (+" +
-           std::to_string(n_added) + " -" + std::to_string(n_released) + ")" +
-           (releases_frozen ? " [cycling: releases frozen]" : "");
+           std::to_string(n_added) + " new, -" + std::to_string(n_released) +
+           " released)" +
+           (releases_frozen ? " [no releases until Newton converges]" : "");
   }
 
   unsigned int

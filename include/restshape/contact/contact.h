@@ -172,7 +172,7 @@ namespace RestShape
     std::string
     unsettled_text() const;
 
-    /// ", contact N active (+a -r)" for the Newton progress line.
+    /// ", contact N active (+a new, -r released)" for the Newton progress line.
     std::string
     progress_text() const;
 
