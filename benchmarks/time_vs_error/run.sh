@@ -53,4 +53,12 @@ for element in P1 P2 Q1 Q2; do
     echo "| ${row//,/ | } |"
   done
 done
+# The figure the coarse version asserts: on the same mesh (level 0) the
+# quadratic elements are at least 100 times as accurate in L2 as the linear
+# ones (measured: P2/P1 about 1/1900, Q2/Q1 about 1/14000).
+awk -F, '$2 == 0 { e[$1] = $6 }
+  END { ok = 1
+        if (("P1" in e) && ("P2" in e)) { printf "P2/P1 L2 error at level 0: %.3g\n", e["P2"] / e["P1"]; ok = ok && e["P2"] * 100 < e["P1"] }
+        if (("Q1" in e) && ("Q2" in e)) { printf "Q2/Q1 L2 error at level 0: %.3g\n", e["Q2"] / e["Q1"]; ok = ok && e["Q2"] * 100 < e["Q1"] }
+        exit !ok }' "$csv" || { echo "FAIL: a quadratic element is not 100 times as accurate as its linear one"; status=1; }
 exit $status
