@@ -60,25 +60,17 @@ namespace RestShape
     _image *
     cgal_labels(const LabelledImage &image, const std::array<double, 3> &h)
     {
-      const ImageLabel   top   = image.max_label();
-      const unsigned int bytes = top <= 255 ? 1 : top <= 65535 ? 2 : 4;
-      _image            *raw   = ::_createImage(image.size[0],
+      _image *raw = ::_createImage(image.size[0],
                                    image.size[1],
                                    image.size[2],
                                    1,
                                    h[0],
                                    h[1],
                                    h[2],
-                                   bytes,
+                                   image.label_bytes(),
                                    WK_FIXED,
                                    SGN_UNSIGNED);
-      for (std::size_t v = 0; v < image.labels.size(); ++v)
-        if (bytes == 1)
-          static_cast<std::uint8_t *>(raw->data)[v] = image.labels[v];
-        else if (bytes == 2)
-          static_cast<std::uint16_t *>(raw->data)[v] = image.labels[v];
-        else
-          static_cast<std::uint32_t *>(raw->data)[v] = image.labels[v];
+      image.store_labels(raw->data);
       return raw;
     }
 

@@ -53,6 +53,26 @@ namespace RestShape
     return labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
   }
 
+  unsigned int
+  LabelledImage::label_bytes() const
+  {
+    const ImageLabel top = max_label();
+    return top <= 255 ? 1 : top <= 65535 ? 2 : 4;
+  }
+
+  void
+  LabelledImage::store_labels(void *data) const
+  {
+    const unsigned int bytes = label_bytes();
+    for (std::size_t v = 0; v < labels.size(); ++v)
+      if (bytes == 1)
+        static_cast<std::uint8_t *>(data)[v] = labels[v];
+      else if (bytes == 2)
+        static_cast<std::uint16_t *>(data)[v] = labels[v];
+      else
+        static_cast<std::uint32_t *>(data)[v] = labels[v];
+  }
+
   namespace
   {
     struct NiftiDeleter
@@ -189,21 +209,16 @@ namespace RestShape
     const int64_t dims[8] = {
       3, image.size[0], image.size[1], image.size[2], 1, 1, 1, 1};
     nifti_set_debug_level(0);
-    const ImageLabel                           top  = image.max_label();
-    const int                                  type = top <= 255   ? DT_UINT8 :
-                                                      top <= 65535 ? DT_UINT16 :
-                                                                     DT_UINT32;
+    const unsigned int                         bytes = image.label_bytes();
     std::unique_ptr<nifti_image, NiftiDeleter> nim(
-      nifti_make_new_nim(dims, type, 1));
+      nifti_make_new_nim(dims,
+                         bytes == 1 ? DT_UINT8 :
+                         bytes == 2 ? DT_UINT16 :
+                                      DT_UINT32,
+                         1));
     if (!nim)
       throw InputError(file, parameter, "cannot allocate the image");
-    for (std::size_t v = 0; v < image.labels.size(); ++v)
-      if (type == DT_UINT8)
-        static_cast<std::uint8_t *>(nim->data)[v] = image.labels[v];
-      else if (type == DT_UINT16)
-        static_cast<std::uint16_t *>(nim->data)[v] = image.labels[v];
-      else
-        static_cast<std::uint32_t *>(nim->data)[v] = image.labels[v];
+    image.store_labels(nim->data);
     nim->nifti_type = NIFTI_FTYPE_NIFTI1_1;
     const auto h    = image.spacing();
     nim->dx = nim->pixdim[1] = h[0];

@@ -38,6 +38,15 @@ namespace RestShape
     ImageLabel
     max_label() const;
 
+    /// Bytes of the smallest unsigned word that holds every label (1, 2
+    /// or 4).
+    unsigned int
+    label_bytes() const;
+
+    /// Store the labels in @p data as unsigned words of label_bytes().
+    void
+    store_labels(void *data) const;
+
     std::size_t
     index(const unsigned int i,
           const unsigned int j,
