@@ -139,42 +139,31 @@ namespace
 int
 main(int argc, char **argv)
 {
-  if (wants_help(argc, argv))
-    {
-      std::cout << usage;
-      return 0;
-    }
   try
     {
-      std::string           brain_file, atlas_file, out;
-      std::array<double, 3> centre{{-32, 28, 28}};
-      double                radius = 12, half_width = 16;
-      for (int i = 1; i < argc; ++i)
+      const ToolOptions cl(argc,
+                           argv,
+                           {"--brain",
+                            "--atlas",
+                            "--out",
+                            "--tumour",
+                            "--tumour-radius",
+                            "--brainstem-half-width"});
+      if (cl.help())
         {
-          const std::string arg = argv[i];
-          if (i + 1 >= argc)
-            throw InputError("", arg, "missing value");
-          const std::string value = argv[++i];
-          if (arg == "--brain")
-            brain_file = value;
-          else if (arg == "--atlas")
-            atlas_file = value;
-          else if (arg == "--out")
-            out = value;
-          else if (arg == "--tumour")
-            centre = parse_triple(arg, value);
-          else if (arg == "--tumour-radius")
-            radius = parse_positive(arg, value);
-          else if (arg == "--brainstem-half-width")
-            half_width = parse_positive(arg, value);
-          else
-            throw InputError("", arg, "unknown option");
+          std::cout << usage;
+          return 0;
         }
-      if (brain_file.empty() || atlas_file.empty() || out.empty())
-        throw InputError("",
-                         "--brain",
-                         "usage: restshape-brain-labels --brain ch2bet.nii.gz "
-                         "--atlas aal.nii.gz --out LABELS.nii.gz");
+      const std::string brain_file =
+        cl.required("--brain", "a brain mask, e.g. ch2bet.nii.gz");
+      const std::string atlas_file =
+        cl.required("--atlas", "a labelled atlas, e.g. aal.nii.gz");
+      const std::string out =
+        cl.required("--out", "the output image, e.g. LABELS.nii.gz");
+      const std::array<double, 3> centre =
+        cl.triple("--tumour", {{-32, 28, 28}});
+      const double radius     = cl.positive("--tumour-radius", 12);
+      const double half_width = cl.positive("--brainstem-half-width", 16);
 
       const LabelledImage brain = read_labelled_image(brain_file, "--brain");
       const LabelledImage atlas = read_labelled_image(atlas_file, "--atlas");

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iostream>
 
 namespace
@@ -68,80 +69,82 @@ namespace
     Label        label;
   };
 
+  /// --slab AXIS:MIN:MAX:LABEL.
+  Slab
+  parse_slab(const std::string &text)
+  {
+    const std::string option = "--slab";
+    const auto        f      = Utilities::split_string_list(text, ':');
+    if (f.size() != 4 || f[0].size() != 1 || f[0][0] < 'x' || f[0][0] > 'z')
+      throw InputError("",
+                       option,
+                       "got '" + text +
+                         "'; expected AXIS:MIN:MAX:LABEL, e.g. z:0:5:2");
+    const double label = parse_number(option, f[3]);
+    if (label < 0 || label > max_label || label != std::floor(label))
+      throw InputError("",
+                       option,
+                       "label '" + f[3] + "' of '" + text +
+                         "' is not a whole number from 0 to " +
+                         std::to_string(max_label));
+    return {unsigned(f[0][0] - 'x'),
+            parse_number(option, f[1]),
+            parse_number(option, f[2]),
+            Label(label)};
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  if (wants_help(argc, argv))
-    {
-      std::cout << usage;
-      return 0;
-    }
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      std::array<double, 3>       size{{1, 1, 1}}, origin{{0, 0, 0}};
-      std::array<unsigned int, 3> n{{1, 1, 1}};
-      bool                        tets = true, tets24 = false;
-      Label                       label = 1;
-      std::vector<Slab>           slabs;
-      std::string                 out;
-      double                      hemisphere = 0, grading = 1;
-      unsigned int                refinements = 0;
-      for (int i = 1; i < argc; ++i)
+      const ToolOptions cl(argc,
+                           argv,
+                           {"--size",
+                            "--origin",
+                            "--subdivisions",
+                            "--cell-type",
+                            "--label",
+                            "--slab",
+                            "--out",
+                            "--hemisphere",
+                            "--refinements",
+                            "--grading"});
+      if (cl.help())
         {
-          const std::string arg = argv[i];
-          if (i + 1 >= argc)
-            throw InputError("", arg, "missing value");
-          const std::string value = argv[++i];
-          if (arg == "--size")
-            size = parse_triple(arg, value);
-          else if (arg == "--origin")
-            origin = parse_triple(arg, value);
-          else if (arg == "--subdivisions")
-            {
-              const auto t = parse_triple(arg, value);
-              for (unsigned int d = 0; d < 3; ++d)
-                n[d] = static_cast<unsigned int>(t[d]);
-            }
-          else if (arg == "--cell-type")
-            {
-              tets   = (value == "tetrahedra");
-              tets24 = (value == "tetrahedra24");
-              if (!tets && !tets24 && value != "hexahedra")
-                throw InputError(
-                  "", arg, "expected tetrahedra, tetrahedra24 or hexahedra");
-            }
-          else if (arg == "--label")
-            label = std::stoi(value);
-          else if (arg == "--slab")
-            {
-              const auto f = Utilities::split_string_list(value, ':');
-              if (f.size() != 4 || f[0].size() != 1 || f[0][0] < 'x' ||
-                  f[0][0] > 'z')
-                throw InputError("",
-                                 arg,
-                                 "expected AXIS:MIN:MAX:LABEL, e.g. z:0:5:2");
-              slabs.push_back({unsigned(f[0][0] - 'x'),
-                               std::stod(f[1]),
-                               std::stod(f[2]),
-                               Label(std::stoi(f[3]))});
-            }
-          else if (arg == "--out")
-            out = value;
-          else if (arg == "--hemisphere")
-            hemisphere = std::stod(value);
-          else if (arg == "--refinements")
-            refinements = std::stoi(value);
-          else if (arg == "--grading")
-            grading = std::stod(value);
-
-          else
-            throw InputError("", arg, "unknown option");
+          std::cout << usage;
+          return 0;
         }
-      if (out.empty())
-        throw InputError("", "--out", "no output file given");
+      const std::array<double, 3> size   = cl.triple("--size", {{1, 1, 1}});
+      const std::array<double, 3> origin = cl.triple("--origin", {{0, 0, 0}});
+      std::array<unsigned int, 3> n{{1, 1, 1}};
+      const auto subdivisions = cl.triple("--subdivisions", {{1, 1, 1}});
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          n[d] = static_cast<unsigned int>(subdivisions[d]);
+          if (subdivisions[d] < 1 || n[d] != subdivisions[d])
+            throw InputError("",
+                             "--subdivisions",
+                             "expected three whole numbers >= 1, got '" +
+                               cl.text("--subdivisions") + "'");
+        }
+      const std::string cell_type =
+        cl.choice("--cell-type",
+                  "tetrahedra",
+                  {"tetrahedra", "tetrahedra24", "hexahedra"});
+      const bool        tets   = cell_type == "tetrahedra";
+      const bool        tets24 = cell_type == "tetrahedra24";
+      const Label       label  = cl.integer("--label", 1, 0, max_label);
+      std::vector<Slab> slabs;
+      for (const std::string &slab : cl.all("--slab"))
+        slabs.push_back(parse_slab(slab));
+      const std::string out =
+        cl.required("--out", "the output mesh's file name (.msh)");
+      const double       hemisphere  = cl.non_negative("--hemisphere", 0);
+      const unsigned int refinements = cl.integer("--refinements", 0, 0, 8);
+      const double       grading     = cl.positive("--grading", 1);
 
       if (hemisphere > 0)
         {

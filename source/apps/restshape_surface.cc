@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/generators.h>
 #include <restshape/base/command_line.h>
+#include <restshape/base/input_error.h>
 
 #include <array>
 #include <iostream>
@@ -52,47 +53,30 @@ namespace
 int
 main(int argc, char **argv)
 {
-  if (wants_help(argc, argv))
-    {
-      std::cout << usage;
-      return 0;
-    }
   try
     {
-      std::string           shape, out;
-      std::array<double, 3> a{{0, 0, 0}}, size{{1, 1, 1}};
-      double                radius       = 1;
-      unsigned int          subdivisions = 3;
-      bool                  flip = false, open = false;
-      for (int i = 1; i < argc; ++i)
+      const ToolOptions cl(
+        argc,
+        argv,
+        {"--box", "--sphere", "--size", "--radius", "--subdivisions", "--out"},
+        {"--flip", "--open"});
+      if (cl.help())
         {
-          const std::string arg = argv[i];
-          if (arg == "--flip")
-            flip = true;
-          else if (arg == "--open")
-            open = true;
-          else if (i + 1 >= argc)
-            throw std::runtime_error("missing value after " + arg);
-          else if (arg == "--box" || arg == "--sphere")
-            {
-              shape = arg.substr(2);
-              a     = parse_triple(arg, argv[++i]);
-            }
-          else if (arg == "--size")
-            size = parse_triple(arg, argv[++i]);
-          else if (arg == "--radius")
-            radius = parse_positive(arg, argv[++i]);
-          else if (arg == "--subdivisions")
-            subdivisions = std::stoi(argv[++i]);
-          else if (arg == "--out")
-            out = argv[++i];
-          else
-            throw std::runtime_error("unknown option " + arg);
+          std::cout << usage;
+          return 0;
         }
-      if (shape.empty() || out.empty())
-        throw std::runtime_error(
-          "usage: restshape-surface --box X,Y,Z --size LX,LY,LZ | "
-          "--sphere X,Y,Z --radius R [--subdivisions N] --out FILE");
+      if (cl.given("--box") == cl.given("--sphere"))
+        throw InputError("",
+                         "--box",
+                         "expected either --box X0,Y0,Z0 or --sphere X,Y,Z");
+      const std::string           shape  = cl.given("--box") ? "box" : "sphere";
+      const std::array<double, 3> a      = cl.triple("--" + shape, {{0, 0, 0}});
+      const std::array<double, 3> size   = cl.triple("--size", {{1, 1, 1}});
+      const double                radius = cl.positive("--radius", 1);
+      const unsigned int subdivisions = cl.integer("--subdivisions", 3, 0, 8);
+      const bool         flip         = cl.given("--flip");
+      const bool         open         = cl.given("--open");
+      const std::string  out = cl.required("--out", "a surface file name");
 
       Mesh mesh;
       if (shape == "box")
@@ -134,13 +118,14 @@ main(int argc, char **argv)
       if (!CGAL::IO::write_polygon_mesh(out,
                                         mesh,
                                         CGAL::parameters::stream_precision(17)))
-        throw std::runtime_error("cannot write " + out);
+        throw InputError(out, "--out", "cannot write the surface");
       std::cout << out << ": " << mesh.number_of_faces() << " triangles"
                 << std::endl;
     }
   catch (const std::exception &exc)
     {
-      std::cerr << "restshape-surface: error: " << exc.what() << std::endl;
+      std::cerr << "restshape-surface: error: " << one_line_message(exc)
+                << std::endl;
       return 1;
     }
   return 0;

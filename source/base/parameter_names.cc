@@ -112,10 +112,8 @@ namespace RestShape
       }
   }
 
-  std::string
-  ParameterNames::unknown_text(const std::string           &kind,
-                               const std::string           &path,
-                               const std::set<std::string> &known) const
+  std::vector<std::string>
+  nearest_names(const std::string &path, const std::set<std::string> &known)
   {
     const std::string name = normalized(last_part(path));
     // The nearest names anywhere (the name may be in another subsection),
@@ -131,14 +129,31 @@ namespace RestShape
         near.emplace_back(d, k);
       }
     std::sort(near.begin(), near.end());
-    const unsigned int limit = std::max<unsigned int>(2, name.size() / 3);
-    std::string        text  = "unknown " + kind + " '" + path + "'";
-    std::string        list;
+    const unsigned int       limit = std::max<unsigned int>(2, name.size() / 3);
+    std::vector<std::string> result;
     for (unsigned int i = 0; i < near.size() && i < 3; ++i)
       if (near[i].first <= limit)
-        list += (list.empty() ? "" : ", ") + ("'" + near[i].second + "'");
-    return text + (list.empty() ? "; see restshape --print-parameters" :
-                                  "; did you mean " + list + "?");
+        result.push_back(near[i].second);
+    return result;
+  }
+
+  std::string
+  did_you_mean(const std::vector<std::string> &names)
+  {
+    std::string list;
+    for (const std::string &n : names)
+      list += (list.empty() ? "" : ", ") + ("'" + n + "'");
+    return list.empty() ? "" : "; did you mean " + list + "?";
+  }
+
+  std::string
+  ParameterNames::unknown_text(const std::string           &kind,
+                               const std::string           &path,
+                               const std::set<std::string> &known) const
+  {
+    const std::string text = "unknown " + kind + " '" + path + "'";
+    const std::string near = did_you_mean(nearest_names(path, known));
+    return text + (near.empty() ? "; see restshape --print-parameters" : near);
   }
 
   void

@@ -86,6 +86,15 @@ namespace RestShape
     }
   } // namespace
 
+  std::set<unsigned int>
+  boundary_vertices(const MeshDescription &mesh)
+  {
+    std::set<unsigned int> vertices;
+    for (const auto &[c, corners] : boundary_faces(mesh))
+      vertices.insert(corners.begin(), corners.end());
+    return vertices;
+  }
+
   MeshPieces
   face_connected_pieces(const MeshDescription &mesh)
   {

@@ -13,6 +13,18 @@
 namespace RestShape
 {
   /**
+   * The known names nearest to @p name (at most three, within a third of
+   * its length in edit distance; case, blanks, apostrophes and underscores
+   * ignored; of paths "A/B" only the last parts are compared).
+   */
+  std::vector<std::string>
+  nearest_names(const std::string &name, const std::set<std::string> &known);
+
+  /// "; did you mean 'a', 'b'?" (empty for no names).
+  std::string
+  did_you_mean(const std::vector<std::string> &names);
+
+  /**
    * Every subsection and entry of a ParameterHandler as a path
    * ("Materials/Young's modulus"). Unknown names get InputErrors that name
    * the nearest known ones (edit distance, case and spacing ignored).

@@ -10,6 +10,7 @@
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ namespace RestShape
    */
   unsigned int
   n_pinched_boundary_edges(const MeshDescription &mesh);
+
+  /// The vertices on the boundary of @p mesh (on a face of one cell only).
+  std::set<unsigned int>
+  boundary_vertices(const MeshDescription &mesh);
 
   struct SurfaceGap
   {
