@@ -96,7 +96,11 @@ namespace RestShape
             << mesh->label_counts().size() << " labels)";
     else
       for (const auto &[label, n] : mesh->label_counts())
-        pcout << ' ' << label << " (" << n << " coarse cells)";
+        {
+          const std::string name = mesh->label_names().name(label);
+          pcout << ' ' << label << " (" << (name.empty() ? "" : name + ", ")
+                << n << " coarse cells)";
+        }
     pcout << std::endl;
     const auto [gap, where] = mesh->narrowest_gap();
     if (std::isfinite(gap))
@@ -277,6 +281,11 @@ namespace RestShape
     output->write_text("parameters.prm", [&](std::ostream &out) {
       prm.print_parameters(out, ParameterHandler::PRM);
     });
+    // The name of each value of the VTU's label field.
+    if (!mesh->label_names().empty())
+      output->write_text("label_names.txt", [&](std::ostream &out) {
+        write_label_names(mesh->label_names(), out);
+      });
   }
 
   SolveStatistics
@@ -424,7 +433,8 @@ namespace RestShape
         [&](unsigned int v) { return rest_positions[v]; },
         parameters.mesh.length_unit,
         output->path("rest_shape.msh"),
-        &rest_data);
+        &rest_data,
+        mesh->label_names());
   }
 
   std::string

@@ -15,6 +15,7 @@
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
 #include <restshape/forward/linear_solver.h>
+#include <restshape/mesh/labelled_mesh.h>
 
 #include <filesystem>
 #include <iostream>
@@ -159,6 +160,10 @@ main(int argc, char **argv)
       for (const std::string &o : overrides)
         apply_override(prm, o);
 
+      // Names of labels (the mesh's, Mesh/Label names) become labels.
+      MeshParameters mesh_parameters;
+      mesh_parameters.parse_parameters(prm);
+      Parameters::replace_label_names(prm, scene_label_names(mesh_parameters));
       Parameters parameters;
       parameters.parse_parameters(prm);
       // Destroy the simulator (and its TimerOutput, which prints a banner

@@ -13,6 +13,7 @@
 #include <restshape/mesh/mesh_pieces.h>
 #include <restshape/mesher/image_mesher.h>
 #include <restshape/mesher/image_morphology.h>
+#include <restshape/mesher/label_map.h>
 #include <restshape/mesher/labelled_image.h>
 
 #include <filesystem>
@@ -31,7 +32,8 @@ namespace
     "      [--cell-size MM] [--facet-size MM] [--facet-distance MM]\n"
     "      [--sliver-bound DEG] [--seed N] [--min-piece-fraction F]\n"
     "      [--close-sulci MM]\n"
-
+    "      [--label-names NAMES.txt] [--label-map MAP.txt\n"
+    "       [--unlisted-labels error|background]]\n"
     "      [--skull-out SKULL.stl --skull-gap MM [--skull-closing MM]\n"
     "       [--skull-facet-size MM]]\n"
     "\n"
@@ -50,7 +52,22 @@ namespace
     "of MM mm before meshing: sulci and gaps narrower than about 2 MM are\n"
     "filled with the neighbouring label, so that the mesh's surface has no\n"
     "pinched edges there (two folds touching along an edge, where CSF\n"
-    "pressure crushes the cells). The report counts the pinched edges left.\n";
+    "pressure crushes the cells). The report counts the pinched edges left.\n"
+    "\n"
+    "Labels: any whole-number voxel value from 0 (background) to 2147483647.\n"
+    "--label-names reads a table of 'label name' lines (e.g. the .nii.txt\n"
+    "next to an atlas); the mesh then carries the names of its labels as gmsh\n"
+    "$PhysicalNames, and a scene may use them wherever it lists labels\n"
+    "('Young's modulus = cerebrum:1500, *:1000'). --label-map merges atlas\n"
+    "labels into tissues before meshing, one line per tissue:\n"
+    "  # atlas labels   tissue label   name\n"
+    "  1-90             1              cerebrum\n"
+    "  91-116,120       3              cerebellum\n"
+    "  117              0              (0: background, left out)\n"
+    "Atlas labels are labels, ranges or (with --label-names) atlas names;\n"
+    "the mesh carries the tissue names. Image labels the map does not list\n"
+    "are an error that lists them, or background with --unlisted-labels\n"
+    "background.\n";
 } // namespace
 
 using namespace RestShape;
@@ -61,6 +78,8 @@ namespace
   struct MesherSettings
   {
     std::string      image_file, out, skull_out;
+    std::string      label_names_file, label_map_file;
+    UnlistedLabels   unlisted = UnlistedLabels::error;
     ImageMeshOptions options;
     double           skull_gap = 0, skull_facet_size = 0, skull_closing = 10;
     double           min_piece_fraction = 0.01, close_sulci = 0;
@@ -72,11 +91,22 @@ namespace
     MesherSettings s;
     s.image_file =
       cl.required("--image", "a labelled NIfTI image (.nii or .nii.gz)");
-    s.out        = cl.required("--out", "the output mesh's file name (.msh)");
-    s.skull_out  = cl.text("--skull-out");
-    auto &o      = s.options;
-    o.cell_size  = cl.positive("--cell-size", o.cell_size);
-    o.facet_size = cl.positive("--facet-size", o.cell_size);
+    s.out       = cl.required("--out", "the output mesh's file name (.msh)");
+    s.skull_out = cl.text("--skull-out");
+    s.label_names_file = cl.text("--label-names");
+    s.label_map_file   = cl.text("--label-map");
+    if (cl.given("--unlisted-labels") && s.label_map_file.empty())
+      throw InputError("",
+                       "--unlisted-labels",
+                       "given without --label-map; expected it with a map");
+    s.unlisted =
+      cl.choice("--unlisted-labels", "error", {"error", "background"}) ==
+          "error" ?
+        UnlistedLabels::error :
+        UnlistedLabels::background;
+    auto &o          = s.options;
+    o.cell_size      = cl.positive("--cell-size", o.cell_size);
+    o.facet_size     = cl.positive("--facet-size", o.cell_size);
     o.facet_distance = cl.positive("--facet-distance", o.facet_distance);
     o.sliver_bound   = cl.positive("--sliver-bound", o.sliver_bound);
     o.seed           = cl.integer("--seed", o.seed, 0, 2147483647);
@@ -110,17 +140,68 @@ namespace
     return s;
   }
 
+  /// "label 3" or "label 3 (cerebellum)".
+  std::string
+  label_text(const unsigned int label, const LabelNames &names)
+  {
+    const std::string name = names.name(label);
+    return "label " + std::to_string(label) +
+           (name.empty() ? "" : " (" + name + ")");
+  }
+
+  /// Apply --label-map and read --label-names; the names of the labels
+  /// the mesh will carry.
+  LabelNames
+  prepare_labels(LabelledImage &image, const MesherSettings &s)
+  {
+    const LabelNames atlas_names =
+      s.label_names_file.empty() ?
+        LabelNames() :
+        read_label_names(s.label_names_file, "--label-names");
+    if (s.label_map_file.empty())
+      return atlas_names;
+    const LabelMap map =
+      LabelMap::read(s.label_map_file, "--label-map", atlas_names);
+    const std::size_t n_dropped =
+      apply_label_map(image, map, s.unlisted, s.label_map_file, "--label-map");
+    const auto counts = image.label_counts();
+    if (counts.empty())
+      throw InputError(s.label_map_file,
+                       "--label-map",
+                       "every labelled voxel became background; expected "
+                       "at least one tissue label other than 0");
+    const auto h = image.spacing();
+    std::cout << "label map " << s.label_map_file << ": " << counts.size()
+              << " tissue labels, " << n_dropped * h[0] * h[1] * h[2] / 1000
+              << " cm^3 of the atlas now background" << std::endl;
+    return map.tissue_names();
+  }
+
   void
-  report_image(const LabelledImage &image, const std::string &file)
+  report_image(const LabelledImage &image,
+               const std::string   &file,
+               const LabelNames    &names)
   {
     const auto h = image.spacing();
     std::cout << std::setprecision(4) << "image " << file << ": "
               << image.size[0] << "x" << image.size[1] << "x" << image.size[2]
               << " voxels of " << h[0] << "x" << h[1] << "x" << h[2]
               << " mm; labels";
-    for (const auto &[label, count] : image.label_counts())
-      std::cout << " " << label << " (" << count * h[0] * h[1] * h[2] / 1000
-                << " cm^3)";
+    const auto counts = image.label_counts();
+    // An atlas has hundreds of labels: then only their list.
+    constexpr std::size_t max_listed = 12;
+    if (counts.size() > max_listed)
+      {
+        std::set<Label> labels;
+        for (const auto &[label, count] : counts)
+          labels.insert(label);
+        std::cout << ' ' << to_string(labels) << std::endl;
+        return;
+      }
+    for (const auto &[label, count] : counts)
+      std::cout << " " << label
+                << (names.name(label).empty() ? "" : " " + names.name(label))
+                << " (" << count * h[0] * h[1] * h[2] / 1000 << " cm^3)";
     std::cout << std::endl;
   }
 
@@ -211,15 +292,15 @@ namespace
     for (const auto &[label, count] : image.label_counts())
       {
         const auto volume = q.volume_per_label.find(label);
-        std::cout << "  label " << label << ": " << n_per_label[label]
-                  << " tetrahedra, "
+        std::cout << "  " << label_text(label, mesh.names) << ": "
+                  << n_per_label[label] << " tetrahedra, "
                   << (volume == q.volume_per_label.end() ?
                         0. :
                         volume->second / 1000)
                   << " cm^3 (image " << count * h[0] * h[1] * h[2] / 1000
                   << " cm^3)" << std::endl;
         if (n_per_label[label] == 0)
-          std::cout << "  warning: label " << label
+          std::cout << "  warning: " << label_text(label, mesh.names)
                     << " has no tetrahedron; reduce --cell-size to resolve it"
                     << std::endl;
       }
@@ -315,7 +396,10 @@ main(int argc, char **argv)
                             "--skull-out",
                             "--skull-gap",
                             "--skull-closing",
-                            "--skull-facet-size"});
+                            "--skull-facet-size",
+                            "--label-names",
+                            "--label-map",
+                            "--unlisted-labels"});
       if (cl.help())
         {
           std::cout << usage;
@@ -323,7 +407,8 @@ main(int argc, char **argv)
         }
       const MesherSettings s     = read_settings(cl);
       LabelledImage        image = read_labelled_image(s.image_file, "--image");
-      report_image(image, s.image_file);
+      const LabelNames     names = prepare_labels(image, s);
+      report_image(image, s.image_file, names);
 
       // The closed image is meshed; the skull comes from the image as read.
       LabelledImage closed;
@@ -331,6 +416,8 @@ main(int argc, char **argv)
         closed = close_sulci(image, s);
       const LabelledImage &meshed_image = s.close_sulci > 0 ? closed : image;
       MeshDescription      mesh         = make_mesh(meshed_image, s);
+      for (const auto &[label, name] : names.by_label())
+        mesh.names.add(label, name, s.out, "--out");
       report_mesh(mesh, meshed_image, s);
 
       MeshDescription in_metres = mesh;
@@ -338,7 +425,9 @@ main(int argc, char **argv)
         p *= 1e-3;
       check_mesh(in_metres, s.out);
       write_gmsh(in_metres, 1e-3, s.out);
-      std::cout << "wrote " << s.out << " (mm)" << std::endl;
+      std::cout << "wrote " << s.out << " (mm"
+                << (names.empty() ? "" : ", with the names of its labels")
+                << ")" << std::endl;
       if (!s.skull_out.empty())
         write_skull(image, in_metres, s);
     }

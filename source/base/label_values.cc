@@ -40,8 +40,9 @@ namespace RestShape
                          parameter,
                          "'" + t +
                            "' is not a label; expected a non-negative "
-                           "integer (a physical volume tag of the mesh) or "
-                           "a range such as '1-90'");
+                           "integer (a physical volume tag of the mesh), "
+                           "a range such as '1-90' or a name of a label "
+                           "($PhysicalNames of the mesh, Mesh/Label names)");
       return static_cast<Label>(value);
     }
 

@@ -9,6 +9,26 @@
 
 namespace RestShape
 {
+  namespace
+  {
+    /// A parameter that names labels.
+    struct LabelListEntry
+    {
+      std::string section, entry;
+      /// A list of label:value (a lone value is a value for all labels).
+      bool values;
+    };
+
+    const std::vector<LabelListEntry> label_list_entries = {
+      {"Materials", "Young's modulus", true},
+      {"Materials", "Poisson's ratio", true},
+      {"Materials", "Density", true},
+      {"Boundary conditions", "Fixed labels", false},
+      {"Boundary conditions", "Elastic support labels", false},
+      {"Loads", "Pressure labels", false},
+      {"Contact", "Contact labels", false}};
+  } // namespace
+
   using dealii::ParameterHandler;
   namespace Patterns = dealii::Patterns;
 
@@ -56,6 +76,16 @@ namespace RestShape
                       "The simulation then starts pre-stressed: the body "
                       "rests in that shape and the loads bring it back to "
                       "Mesh/File's geometry. Empty: Mesh/File is stress-free.");
+    prm.declare_entry("Label names",
+                      "",
+                      Patterns::Anything(),
+                      "Optional: a table of 'label name' lines (e.g. the "
+                      ".nii.txt table of an atlas) that names the labels "
+                      "of Mesh/File, in addition to its own gmsh "
+                      "$PhysicalNames (which restshape-mesh writes). Every "
+                      "label list of the scene (Materials, Boundary "
+                      "conditions, Loads, Contact) accepts these names "
+                      "where it accepts a label, e.g. 'cerebrum:1500'.");
     prm.declare_entry("Cell type",
                       "tetrahedra",
                       Patterns::Selection("tetrahedra|hexahedra"),
@@ -79,6 +109,7 @@ namespace RestShape
     if (file.empty())
       throw InputError("", "Mesh/File", "no mesh file given");
     rest_shape_file  = dealii::Utilities::trim(prm.get("Rest shape file"));
+    label_names_file = dealii::Utilities::trim(prm.get("Label names"));
     length_unit_name = prm.get("Length unit");
     length_unit = length_unit_in_metres(length_unit_name, "Mesh/Length unit");
     cell_type   = prm.get("Cell type") == "hexahedra" ? CellType::hexahedra :
@@ -449,24 +480,33 @@ namespace RestShape
     prestress_comparison.parse_parameters(prm);
     // The fluid level is given in the mesh's length unit.
     loads.fluid_level *= mesh.length_unit;
-    const auto list = [&](const std::string &section,
-                          const std::string &entry,
-                          const bool         values) {
-      prm.enter_subsection(section);
-      label_lists.push_back({section + "/" + entry, prm.get(entry), values});
-      prm.leave_subsection();
-    };
-    for (const std::string entry :
-         {"Young's modulus", "Poisson's ratio", "Density"})
-      list("Materials", entry, true);
-    list("Boundary conditions", "Fixed labels", false);
-    list("Boundary conditions", "Elastic support labels", false);
-    list("Loads", "Pressure labels", false);
-    list("Contact", "Contact labels", false);
+    for (const LabelListEntry &e : label_list_entries)
+      {
+        prm.enter_subsection(e.section);
+        label_lists.push_back(
+          {e.section + "/" + e.entry, prm.get(e.entry), e.values});
+        prm.leave_subsection();
+      }
     if (prestress_comparison.enabled && !inverse.enabled)
       throw InputError("",
                        "Prestress comparison/Enabled",
                        "the comparison needs the pre-stressed model: set "
                        "Inverse problem/Enabled = true");
+  }
+
+  void
+  Parameters::replace_label_names(ParameterHandler &prm,
+                                  const LabelNames &names)
+  {
+    for (const LabelListEntry &e : label_list_entries)
+      {
+        prm.enter_subsection(e.section);
+        prm.set(e.entry,
+                RestShape::replace_label_names(prm.get(e.entry),
+                                               e.section + "/" + e.entry,
+                                               names,
+                                               e.values));
+        prm.leave_subsection();
+      }
   }
 } // namespace RestShape

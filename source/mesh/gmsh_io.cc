@@ -10,9 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <numeric>
+#include <set>
+#include <sstream>
 
 namespace RestShape
 {
@@ -121,7 +124,58 @@ namespace RestShape
         out << c + 1 << ' ' << rest.mass_ratios[c] << '\n';
       out << "$EndElementData\n";
     }
+
+    /// gmsh 2.2 $PhysicalNames of the labels of @p tria that have names.
+    void
+    write_physical_names(std::ostream           &out,
+                         const Triangulation<3> &tria,
+                         const LabelNames       &names)
+    {
+      std::set<Label> labels;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (!names.name(cell->material_id()).empty())
+          labels.insert(cell->material_id());
+      if (labels.empty())
+        return;
+      out << "$PhysicalNames\n" << labels.size() << '\n';
+      for (const Label l : labels)
+        out << "3 " << l << " \"" << names.name(l) << "\"\n";
+      out << "$EndPhysicalNames\n";
+    }
   } // namespace
+
+  LabelNames
+  read_gmsh_label_names(const std::string &file)
+  {
+    LabelNames    names;
+    std::ifstream in(file, std::ios::binary);
+    std::string   line;
+    // $PhysicalNames comes before the nodes and elements.
+    while (std::getline(in, line) && line.rfind("$Nodes", 0) != 0 &&
+           line.rfind("$Entities", 0) != 0)
+      if (line.rfind("$PhysicalNames", 0) == 0)
+        {
+          unsigned int n = 0;
+          in >> n;
+          std::getline(in, line);
+          for (unsigned int i = 0; i < n && std::getline(in, line); ++i)
+            {
+              std::istringstream words(line);
+              int                dim = 0;
+              long               tag = -1;
+              words >> dim >> tag;
+              const auto first = line.find('"'), last = line.rfind('"');
+              if (!words || dim != 3 || tag < 0 || tag > max_label ||
+                  first == std::string::npos || last <= first)
+                continue;
+              const std::string name = line.substr(first + 1, last - first - 1);
+              if (LabelNames::is_valid_name(name) && !names.find(name))
+                names.add(Label(tag), name, file, file_parameter);
+            }
+          break;
+        }
+    return names;
+  }
 
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit)
@@ -258,7 +312,8 @@ namespace RestShape
     // Drop vertices that no cell uses (e.g. of boundary-only entities).
     std::vector<unsigned int> all(result.cells.size());
     std::iota(all.begin(), all.end(), 0u);
-    result = select_cells(result, all);
+    result       = select_cells(result, all);
+    result.names = read_gmsh_label_names(file);
     return result;
   }
 
@@ -273,7 +328,9 @@ namespace RestShape
       tria,
       [&](const unsigned int v) { return tria.get_vertices()[v]; },
       length_unit,
-      file);
+      file,
+      nullptr,
+      mesh.names);
   }
 
   void
@@ -281,7 +338,8 @@ namespace RestShape
              const std::function<Point<3>(unsigned int)> &position,
              const double                                 length_unit,
              const std::string                           &file,
-             const RestShapeData                         *rest)
+             const RestShapeData                         *rest,
+             const LabelNames                            &names)
   {
     std::vector<bool> used(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
@@ -291,7 +349,9 @@ namespace RestShape
     write_file_atomically(
       file,
       [&](std::ostream &out) {
-        out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+        out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+        write_physical_names(out, tria, names);
+        out << "$Nodes\n"
             << std::count(used.begin(), used.end(), true) << '\n'
             << std::setprecision(16);
         for (unsigned int v = 0; v < used.size(); ++v)

@@ -20,6 +20,7 @@ namespace RestShape
 
   LabelledMesh::LabelledMesh(const MeshParameters &prm, const MPI_Comm comm)
     : parameters(prm)
+    , names(scene_label_names(prm))
   {
     MeshDescription mesh = read_gmsh(prm.file, prm.length_unit);
     check_mesh(mesh, prm.file);
@@ -76,6 +77,26 @@ namespace RestShape
     create_triangulation();
     for (unsigned int r = 0; r < prm.global_refinements; ++r)
       refine_global();
+  }
+
+  LabelNames
+  scene_label_names(const MeshParameters &parameters)
+  {
+    LabelNames names = read_gmsh_label_names(parameters.file);
+    if (parameters.label_names_file.empty())
+      return names;
+    const std::string parameter = "Mesh/Label names";
+    const LabelNames  table =
+      read_label_names(parameters.label_names_file, parameter);
+    for (const auto &[label, name] : table.by_label())
+      names.add(label, name, parameters.label_names_file, parameter);
+    return names;
+  }
+
+  const LabelNames &
+  LabelledMesh::label_names() const
+  {
+    return names;
   }
 
   std::vector<Point<3>>

@@ -10,6 +10,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <restshape/base/label_names.h>
 #include <restshape/base/label_values.h>
 
 #include <set>
@@ -62,6 +63,7 @@ namespace RestShape
   {
     std::string  file;
     std::string  rest_shape_file;  // optional: the rest shape (same mesh)
+    std::string  label_names_file; // optional: "label name" table
     std::string  length_unit_name; // "mm" or "m"
     double       length_unit;      // metres per unit of the file
     CellType     cell_type;
@@ -284,6 +286,14 @@ namespace RestShape
     /// Throws InputError (without file name; the caller adds it).
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Replace the label names in every label list of @p prm by their
+     * labels (replace_label_names()), before parse_parameters(). Throws
+     * InputError naming the parameter for an unknown name.
+     */
+    static void
+    replace_label_names(dealii::ParameterHandler &prm, const LabelNames &names);
   };
 } // namespace RestShape
 

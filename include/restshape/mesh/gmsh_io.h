@@ -20,6 +20,15 @@ namespace RestShape
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit);
 
+  /**
+   * The names of the volume labels of a gmsh file (its $PhysicalNames of
+   * dimension 3), read without reading the mesh. Names that cannot name a
+   * label in a scene (LabelNames::is_valid_name(), e.g. with blanks) are
+   * left out. Empty for a file without names or that cannot be read.
+   */
+  LabelNames
+  read_gmsh_label_names(const std::string &file);
+
   /// What a rest shape carries besides its geometry (MeshDescription).
   struct RestShapeData
   {
@@ -35,14 +44,16 @@ namespace RestShape
    * physical volume tags. Vertex v is written at position(v) divided by
    * @p length_unit. With @p rest (a rest shape), also the node data
    * "target_position" (length unit) and the element data
-   * "image_mass_ratio". Written atomically.
+   * "image_mass_ratio". Labels with @p names get them as $PhysicalNames.
+   * Written atomically.
    */
   void
   write_gmsh(const dealii::Triangulation<3>                      &tria,
              const std::function<dealii::Point<3>(unsigned int)> &position,
              const double                                         length_unit,
              const std::string                                   &file,
-             const RestShapeData *rest = nullptr);
+             const RestShapeData *rest  = nullptr,
+             const LabelNames    &names = LabelNames());
 
   /// The same for a mesh description (vertices in metres).
   void

@@ -46,6 +46,10 @@ namespace RestShape
     std::set<Label>
     labels() const;
 
+    /// The names of labels (scene_label_names()).
+    const LabelNames &
+    label_names() const;
+
     /// Diagonal of the bounding box (m).
     double
     diameter() const;
@@ -129,7 +133,16 @@ namespace RestShape
     std::pair<double, dealii::Point<3>>       gap;
     std::vector<double>                       mass_ratios; // by coarse cell
     std::vector<dealii::Point<3>>             vertex_targets;
+    LabelNames                                names;
   };
+
+  /**
+   * The names of the labels of a scene: the $PhysicalNames of Mesh/File
+   * and the table of Mesh/Label names (throws InputError naming it if it
+   * cannot be read or names a label differently).
+   */
+  LabelNames
+  scene_label_names(const MeshParameters &parameters);
 } // namespace RestShape
 
 #endif

@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
+#include <restshape/base/label_names.h>
+
 #include <vector>
 
 namespace RestShape
@@ -24,6 +26,8 @@ namespace RestShape
     std::vector<dealii::CellData<3>> cells;
     std::vector<dealii::Point<3>>    targets;
     std::vector<double>              mass_ratios;
+    /// Names of labels (gmsh $PhysicalNames), may be empty.
+    LabelNames names;
 
     /// Add a vertex at the centroid of the vertices @p of (and its target
     /// at the centroid of theirs); returns its index.
