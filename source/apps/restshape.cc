@@ -3,6 +3,7 @@
 //   restshape SCENE.prm                     run a scene
 //   restshape --set 'Sub/Param=value' ...   override parameters (repeatable)
 //   restshape --print-parameters [SUBSECTION]  parameters with defaults
+//   restshape --study 'Sub/Param=v1,v2' ... SCENE.prm  every combination
 //
 // Exit codes: 0 success, 1 bad input, 2 a solver did not converge,
 // 3 internal error.
@@ -10,7 +11,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <restshape/app/scene_input.h>
 #include <restshape/app/simulator.h>
+#include <restshape/app/study.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
@@ -28,38 +31,16 @@ namespace
 {
   const char *usage =
     "usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm\n"
-    "       restshape --print-parameters [SUBSECTION]\n";
-
-  /// Apply "Sub/Sub/Parameter=value" to @p prm.
-  void
-  apply_override(ParameterHandler &prm, const std::string &assignment)
-  {
-    const auto equal = assignment.find('=');
-    if (equal == std::string::npos)
-      throw InputError("--set",
-                       assignment,
-                       "expected 'Subsection/Parameter=value'");
-    const std::string path  = Utilities::trim(assignment.substr(0, equal));
-    const std::string value = Utilities::trim(assignment.substr(equal + 1));
-    const auto        parts = Utilities::split_string_list(path, '/');
-    if (parts.size() < 2)
-      throw InputError("--set", path, "expected 'Subsection/Parameter=value'");
-    ParameterNames(prm).check_entry(path);
-    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-      prm.enter_subsection(parts[i]);
-    try
-      {
-        prm.set(parts.back(), value);
-      }
-    catch (const std::exception &exc)
-      {
-        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-          prm.leave_subsection();
-        throw InputError("--set", path, one_line_message(exc));
-      }
-    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-      prm.leave_subsection();
-  }
+    "       restshape --print-parameters [SUBSECTION]\n"
+    "       restshape --study 'Subsection/Parameter=value1,value2,...'...\n"
+    "                 [--set 'Subsection/Parameter=value']... SCENE.prm\n"
+    "\n"
+    "--study runs the scene once per combination of the values of every\n"
+    "--study parameter, each in OUTPUT/study/NN_.../ (OUTPUT: the scene's\n"
+    "Output/Directory), and writes OUTPUT/study/study.csv and study.txt\n"
+    "(DoFs, Newton and inverse iterations, errors, wall time and peak\n"
+    "memory per run) and study_error_vs_time.svg (doc/model.md, Study\n"
+    "mode).\n";
 
   /// Every parameter, or those of the top-level subsection @p only.
   void
@@ -83,11 +64,73 @@ namespace
           break;
       }
   }
+  /// Whether the command line asks for a study (--study anywhere).
+  bool
+  wants_study(const int argc, char **argv)
+  {
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]).rfind("--study", 0) == 0)
+        return true;
+    return false;
+  }
+
+  /// restshape --study ...: parsed and run without MPI (the runs are
+  /// processes of their own).
+  int
+  study_main(const int argc, char **argv)
+  {
+    std::string prm_file;
+    try
+      {
+        std::vector<StudyAxis>   axes;
+        std::vector<std::string> overrides;
+        for (int i = 1; i < argc; ++i)
+          {
+            const std::string arg = argv[i];
+            if ((arg == "--study" || arg == "--set") && i + 1 >= argc)
+              throw InputError("", arg, "missing value after the option");
+            if (arg == "--study")
+              axes.push_back(StudyAxis::parse(argv[++i]));
+            else if (arg.rfind("--study=", 0) == 0)
+              axes.push_back(StudyAxis::parse(arg.substr(8)));
+            else if (arg == "--set")
+              overrides.emplace_back(argv[++i]);
+            else if (arg.rfind("--set=", 0) == 0)
+              overrides.push_back(arg.substr(6));
+            else if (!arg.empty() && arg[0] == '-')
+              throw InputError(arg, "", "unknown option with --study");
+            else if (prm_file.empty())
+              prm_file = arg;
+            else
+              throw InputError(arg, "", "more than one scene file given");
+          }
+        if (prm_file.empty())
+          throw InputError("", "--study", "no scene file given");
+        return run_study(std::filesystem::read_symlink("/proc/self/exe"),
+                         prm_file,
+                         overrides,
+                         axes);
+      }
+    catch (const InputError &exc)
+      {
+        const InputError e = exc.file.empty() ? exc.in_file(prm_file) : exc;
+        std::cerr << "restshape: error: " << e.what() << std::endl;
+        return 1;
+      }
+    catch (const std::exception &exc)
+      {
+        std::cerr << "restshape: internal error: " << one_line_message(exc)
+                  << std::endl;
+        return 3;
+      }
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
+  if (wants_study(argc, argv))
+    return study_main(argc, argv);
   Utilities::MPI::MPI_InitFinalize mpi(argc,
                                        argv,
                                        numbers::invalid_unsigned_int);
@@ -143,22 +186,7 @@ main(int argc, char **argv)
           "",
           "",
           "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(prm_file, ec))
-        throw InputError(prm_file, "", "no such scene file");
-
-      try
-        {
-          prm.parse_input(prm_file, "", false, true);
-        }
-      catch (const std::exception &exc)
-        {
-          // Misspelled names: the file, line and the nearest known names.
-          ParameterNames(prm).check_file(prm_file);
-          throw InputError(prm_file, "", one_line_message(exc));
-        }
-      for (const std::string &o : overrides)
-        apply_override(prm, o);
+      read_scene(prm, prm_file, overrides);
 
       // Names of labels (the mesh's, Mesh/Label names) become labels.
       MeshParameters mesh_parameters;

@@ -58,10 +58,16 @@ namespace RestShape
     prm.declare_entry("File",
                       "meshes/column_tet.msh",
                       Patterns::FileName(),
-                      "Gmsh mesh file (.msh, format 2.2 or 4.1, ASCII). "
-                      "Physical volume tags become the labels used by "
-                      "Materials, Boundary conditions and Loads. Relative "
-                      "paths are relative to the working directory.");
+                      "Mesh file: gmsh (.msh, any version; physical volume "
+                      "tags are the labels, $PhysicalNames their names), "
+                      "VTK legacy ASCII unstructured grid (.vtk; labels "
+                      "from the cell-data array label or MaterialID) or "
+                      "Abaqus (.inp; C3D4/C3D8 elements, element sets "
+                      "numbered 1, 2, ... in order are the labels, their "
+                      "names the names). Linear tetrahedra or hexahedra. "
+                      "The labels are used by Materials, Boundary "
+                      "conditions, Loads and Contact. Relative paths are "
+                      "relative to the working directory.");
     prm.declare_entry("Length unit",
                       "mm",
                       Patterns::Selection("mm|m"),

@@ -8,6 +8,7 @@
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/mesh/mesh_checks.h>
+#include <restshape/mesh/mesh_formats.h>
 #include <restshape/mesh/mesh_pieces.h>
 #include <restshape/mesh/mesh_transforms.h>
 
@@ -22,7 +23,7 @@ namespace RestShape
     : parameters(prm)
     , names(scene_label_names(prm))
   {
-    MeshDescription mesh = read_gmsh(prm.file, prm.length_unit);
+    MeshDescription mesh = read_mesh(prm.file, prm.length_unit);
     check_mesh(mesh, prm.file);
     // On the mesh as read (before any split into hexahedra).
     gap.first = std::numeric_limits<double>::infinity();
@@ -82,7 +83,7 @@ namespace RestShape
   LabelNames
   scene_label_names(const MeshParameters &parameters)
   {
-    LabelNames names = read_gmsh_label_names(parameters.file);
+    LabelNames names = read_mesh_label_names(parameters.file);
     if (parameters.label_names_file.empty())
       return names;
     const std::string parameter = "Mesh/Label names";
@@ -106,7 +107,7 @@ namespace RestShape
     MeshDescription   rest;
     try
       {
-        rest = read_gmsh(file, parameters.length_unit);
+        rest = read_mesh(file, parameters.length_unit, parameter);
         check_mesh(rest, file);
       }
     catch (const InputError &e)
