@@ -6,7 +6,6 @@
 #define restshape_simulator_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
@@ -18,6 +17,7 @@
 #include <restshape/io/output.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/postprocess/error_estimator.h>
+#include <restshape/postprocess/postprocessor.h>
 #include <restshape/postprocess/verification.h>
 
 #include <memory>
@@ -114,12 +114,12 @@ namespace RestShape
     std::unique_ptr<OutputWriter>      output;
     std::unique_ptr<ExactDisplacement> exact, exact_rest;
 
-    Summary                          summary;
-    dealii::ConvergenceTable         convergence_table;
-    std::vector<std::vector<double>> convergence_rows, iteration_rows;
-    unsigned int                     next_step = 0; // VTU numbering
-    InverseResult                    inverse_result;
-    ErrorEstimate                    estimate; // of the last cycle
+    Summary                                     summary;
+    std::vector<std::unique_ptr<Postprocessor>> postprocessors;
+    std::vector<std::vector<double>>            iteration_rows;
+    unsigned int                                next_step = 0; // VTU numbering
+    InverseResult                               inverse_result;
+    ErrorEstimate                               estimate; // of the last cycle
   };
 } // namespace RestShape
 

@@ -1,0 +1,57 @@
+// The screen lines after a solve.
+#include <restshape/postprocess/screen_report.h>
+
+namespace RestShape
+{
+  namespace
+  {
+    /// Active nodes, force, penetration and the strict conditions; nodes
+    /// beyond the obstacle, on fixed planes, or pulling.
+    void
+    report_contact(const PostprocessInput &in)
+    {
+      const ContactProblem    &contact    = *in.contact;
+      const ContactConditions &conditions = in.forward.contact_conditions();
+      in.pcout << "  Contact: " << contact.n_active() << " active nodes, force "
+               << in.reductions.contact << " N, largest penetration "
+               << conditions.max_penetration * 1e3 << " mm; "
+               << conditions.text() << std::endl;
+      if (conditions.outside > 0)
+        in.pcout << "  Contact: " << conditions.outside
+                 << " candidate nodes lie beyond the obstacle (they started "
+                    "there and are free until they come back in)"
+                 << std::endl;
+      const auto [n_fixed, fixed_distance] = in.reductions.fixed_planes;
+      if (n_fixed > 0)
+        in.pcout << "  Contact: " << n_fixed
+                 << " nodes on fixed planes (their planes kept changing), up "
+                    "to "
+                 << fixed_distance * 1e3 << " mm off the obstacle surface"
+                 << std::endl;
+      const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
+      if (adhesion.nodes > 0)
+        in.pcout << "  Contact: " << adhesion.nodes
+                 << " active nodes pull on the obstacle (accepted), with "
+                 << adhesion.force << " N, " << 100 * adhesion.fraction
+                 << " % of the contact force" << std::endl;
+    }
+  } // namespace
+
+  void
+  ScreenReport::execute(const PostprocessInput &in)
+  {
+    const SolveReductions &r = in.reductions;
+    in.pcout << "  Displacement: max " << r.max_displacement_mm << " mm, mean "
+             << r.mean_displacement_mm << " mm; force balance " << r.imbalance()
+             << " N of " << r.external.norm() << " N; potential energy "
+             << in.forward.potential_energy() << " J" << std::endl;
+    if (in.forward.surface_load().acts(in.forward.load()))
+      in.pcout << "  Surface pressure: resultant " << r.surface << " N ("
+               << (in.forward.surface_load().follower() ? "follower" : "dead")
+               << " load)" << std::endl;
+    if (in.parameters.boundary.support_stiffness > 0)
+      in.pcout << "  Elastic support: force " << r.support << " N" << std::endl;
+    if (in.contact)
+      report_contact(in);
+  }
+} // namespace RestShape

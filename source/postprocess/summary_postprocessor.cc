@@ -1,0 +1,111 @@
+// summary.json after a solve.
+#include <restshape/postprocess/summary_postprocessor.h>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Contact figures: active set, force, the strict conditions, fixed
+    /// planes, adhesion, pressures and the patch.
+    void
+    set_contact(const PostprocessInput &in)
+    {
+      const ContactProblem &contact = *in.contact;
+      Summary              &summary = in.summary;
+      summary.set("active_contact_nodes", long(contact.n_active()));
+      summary.set("contact_force_N", in.reductions.contact);
+      summary.set("active_set_iterations",
+                  long(in.stats.active_set_changes + 1));
+      const ContactConditions &conditions = in.forward.contact_conditions();
+      summary.set("contact_conditions_hold", conditions.satisfied());
+      summary.set("max_penetration_mm", conditions.max_penetration * 1e3);
+      summary.set("max_pull_Pa", conditions.pulling.worst);
+      summary.set("nodes_off_obstacle", long(conditions.off.nodes));
+      summary.set("nodes_outside", long(conditions.outside));
+      const auto [n_fixed, fixed_distance] = in.reductions.fixed_planes;
+      summary.set("fixed_plane_nodes", long(n_fixed));
+      summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
+      const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
+      summary.set("adhesive_contact_nodes", long(adhesion.nodes));
+      summary.set("adhesive_force_N", adhesion.force);
+      summary.set("adhesive_force_fraction", adhesion.fraction);
+      const auto [p_min, p_max] =
+        contact.pressure_range(in.forward.raw_residual());
+      summary.set("contact_pressure_min_Pa", p_min);
+      summary.set("contact_pressure_max_Pa", p_max);
+      summary.set("contact_patch_radius_mm",
+                  contact.patch_radius(in.reductions.contact) * 1e3);
+    }
+
+    /// A forward run from a rest shape: how far the equilibrium is from
+    /// the mesh geometry, or from the target a rest_shape.msh carries.
+    void
+    set_target_error(const PostprocessInput &in)
+    {
+      const Parameters &p = in.parameters;
+      if (p.inverse.enabled ||
+          (p.mesh.rest_shape_file.empty() && in.mesh.targets().empty()))
+        return;
+      const bool from_rest_file = !p.mesh.rest_shape_file.empty();
+      const auto [mean_e, max_e] =
+        from_rest_file ? in.forward.nodal_norms(in.forward.displacement()) :
+                         in.forward.distance_to(in.mesh.targets());
+      in.summary.set("mean_error_mm", mean_e * 1e3);
+      in.summary.set("max_error_mm", max_e * 1e3);
+      in.pcout << (from_rest_file ?
+                     "  Equilibrium vs mesh geometry" :
+                     "  Equilibrium vs the target carried by " + p.mesh.file)
+               << ": mean " << mean_e * 1e3 << " mm, max " << max_e * 1e3
+               << " mm" << std::endl;
+    }
+  } // namespace
+
+  void
+  SummaryPostprocessor::execute(const PostprocessInput &in)
+  {
+    const Parameters      &p       = in.parameters;
+    const SolveStatistics &stats   = in.stats;
+    const SolveReductions &r       = in.reductions;
+    Summary               &summary = in.summary;
+    summary.set("converged", true);
+    summary.set("cell_type",
+                std::string(in.mesh.is_simplex() ? "tetrahedra" : "hexahedra"));
+    summary.set("polynomial_degree", long(p.discretization.degree));
+    summary.set("tangent", p.discretization.tangent_name);
+    summary.set("n_cells",
+                long(in.mesh.triangulation().n_global_active_cells()));
+    summary.set("n_nodes", long(r.n_nodes));
+    summary.set("n_dofs", long(in.forward.dof_handler().n_dofs()));
+    summary.set("newton_iterations", long(stats.newton_iterations));
+    summary.set("load_steps", long(stats.load_steps));
+    if (in.forward.linear_solver_kind() == LinearSolverType::cg_amg)
+      summary.set("linear_iterations_per_newton_step",
+                  double(stats.linear_iterations) /
+                    std::max(1u, stats.newton_iterations));
+    if (!p.inverse.enabled)
+      summary.set("relative_residual", stats.residual / stats.reference);
+    summary.set("max_displacement_mm", r.max_displacement_mm);
+    summary.set("mean_displacement_mm", r.mean_displacement_mm);
+    summary.set("potential_energy_J", in.forward.potential_energy());
+    set_target_error(in);
+    summary.set("external_force_N", r.external);
+    summary.set("surface_force_N", r.surface);
+    summary.set("support_reaction_N", r.reaction);
+    summary.set("force_balance_relative",
+                r.imbalance() / std::max(r.external.norm(), 1e-300));
+    if (p.boundary.support_stiffness > 0)
+      summary.set("elastic_support_force_N", r.support);
+    if (in.contact)
+      set_contact(in);
+
+    summary.set("estimated_error_relative", in.estimate.relative);
+    in.pcout << "  Estimated error ("
+             << (p.refinement.estimator ==
+                     RefinementParameters::Estimator::kelly ?
+                   "Kelly" :
+                   "traction jump")
+             << ", relative H1): " << in.estimate.relative << std::endl;
+  }
+} // namespace RestShape
