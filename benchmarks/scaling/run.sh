@@ -103,4 +103,12 @@ awk -F, -v c="forward_${level}_P${degree}" '$1 == c { t2 = $4 } $1 == c "_1threa
 awk -F, '$1 ~ /^forward/ && $1 !~ /_1thread$/ && $2 == 1 { x[++n] = log($3); y[n] = log($4) }
   END { if (n > 1) { for (i = 1; i <= n; ++i) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }
         printf "log-log slope of forward time against DoFs: %.2f (%d meshes)\n", (n * sxy - sx * sy) / (n * sxx - sx * sx), n } }' "$out/scaling.csv"
+# Parity: one rank, one thread and two ranks reach the same equilibrium.
+max_u() { grep -o '"max_displacement_mm": [-0-9.e+]*' "$out/$1/summary.json" | awk '{ print $2 }'; }
+c="forward_${level}_P${degree}"
+u1=$(max_u "$c") u1t=$(max_u "${c}_1thread") u2=$(max_u "${c}_2ranks")
+echo "largest displacement (mm): 1 rank $u1, 1 thread $u1t, 2 ranks $u2"
+awk -v a="$u1" -v b="$u1t" -v c="$u2" 'BEGIN { d1 = a - b; d2 = a - c; if (d1 < 0) d1 = -d1; if (d2 < 0) d2 = -d2
+  exit (a > 0 && d1 <= 1e-6 * a && d2 <= 1e-6 * a) ? 0 : 1 }' ||
+  { echo "FAILED: the runs differ by more than 1e-6 relative"; status=1; }
 exit $status

@@ -47,4 +47,9 @@ for variant in full no_vtu no_skull no_pressure; do
     "$(awk -v a="$seconds" -v b="$full" 'BEGIN { print a / b }')" \
     "$(timer_seconds Output "$dir.log")" "$(timer_seconds 'Contact search' "$dir.log")"
 done
+# Skipping the VTU output must not change the result.
+max_u() { grep -o '"max_displacement_mm": [-0-9.e+]*' "$out/$1/summary.json" | awk '{ print $2 }'; }
+echo "largest displacement (mm): full $(max_u full), no_vtu $(max_u no_vtu)"
+[ "$(max_u full)" = "$(max_u no_vtu)" ] ||
+  { echo "FAILED: without VTU output the result changed"; status=1; }
 exit $status

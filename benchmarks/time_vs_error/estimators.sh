@@ -56,4 +56,9 @@ for element in Q1 P1; do
     done
   done
 done
+# The traction jump is an estimate to within a factor 2 of the exact error
+# in every cycle (Kelly's may overestimate more: it is not checked).
+awk -F, 'NR > 1 && $3 == "traction jump" && ($8 < 0.5 || $8 > 2) {
+    bad = 1; print "FAILED: traction jump effectivity " $8 " (" $1 " " $2 " cycle " $4 ")" }
+  END { exit bad }' "$csv" || status=1
 exit $status

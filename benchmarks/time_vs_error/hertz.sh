@@ -68,4 +68,9 @@ for element in $elements; do
     echo "| ${row//,/ | } |"
   done
 done
+# Hertz: every contact radius within 5 % of Hertz's a (node spacing
+# limits it), every peak pressure within 20 % of p0.
+awk -F, 'NR > 1 { r = $9 < 0 ? -$9 : $9; p = $12 < 0 ? -$12 : $12
+    if (r > 0.05 || p > 0.2) { bad = 1; print "FAILED: " $1 " level " $2 ": radius error " $9 ", pressure error " $12 } }
+  END { exit bad }' "$csv" || status=1
 exit $status
