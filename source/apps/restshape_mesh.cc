@@ -15,6 +15,7 @@
 #include <restshape/mesher/image_morphology.h>
 #include <restshape/mesher/label_map.h>
 #include <restshape/mesher/labelled_image.h>
+#include <restshape/mesher/skull_cavity.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -36,6 +37,8 @@ namespace
     "       [--unlisted-labels error|background]]\n"
     "      [--skull-out SKULL.stl --skull-gap MM [--skull-closing MM]\n"
     "       [--skull-facet-size MM]]\n"
+    "      [--skull-out SKULL.stl --skull-image MASK.nii[.gz]\n"
+    "       [--skull-facet-size MM]]\n"
     "\n"
     "The mesh is written as gmsh 2.2 in mm, every tetrahedron with its image\n"
     "label as physical volume tag. The skull is a closed, outward-oriented\n"
@@ -44,6 +47,11 @@ namespace
     "Contact/Obstacle file with Side = inside. Before the offset, the labelled\n"
     "region is closed morphologically with a ball of --skull-closing mm\n"
     "(default 10; 0 = none), so that the skull bridges sulci and fissures.\n"
+    "--skull-image instead takes a segmented skull (a mask: non-zero voxels\n"
+    "are bone, on any grid): the skull surface is the boundary of the\n"
+    "largest region the mask encloses (its cavity); a mask open to the\n"
+    "outside, e.g. at the foramen magnum, is an error (close it in the\n"
+    "mask). Brain nodes beyond it are reported, as for a negative gap.\n"
     "Pieces of the mesh joined to the rest only at vertices or edges (Mesh_3\n"
     "leaves them where labelled voxels touch diagonally) and smaller than\n"
     "--min-piece-fraction times the largest piece (default 0.01; 0 keeps all)\n"
@@ -77,7 +85,7 @@ namespace
   /// What the command line asks for.
   struct MesherSettings
   {
-    std::string      image_file, out, skull_out;
+    std::string      image_file, out, skull_out, skull_image;
     std::string      label_names_file, label_map_file;
     UnlistedLabels   unlisted = UnlistedLabels::error;
     ImageMeshOptions options;
@@ -121,10 +129,22 @@ namespace
     s.skull_gap        = cl.number("--skull-gap", 0);
     s.skull_closing    = cl.non_negative("--skull-closing", s.skull_closing);
     s.skull_facet_size = cl.positive("--skull-facet-size", o.facet_size);
-    if (!s.skull_out.empty() && !cl.given("--skull-gap"))
+    s.skull_image      = cl.text("--skull-image");
+    if (!s.skull_image.empty() && s.skull_out.empty())
+      throw InputError("",
+                       "--skull-out",
+                       "--skull-image given without an output surface");
+    if (!s.skull_image.empty() && cl.given("--skull-gap"))
       throw InputError("",
                        "--skull-gap",
-                       "--skull-out needs the CSF gap in mm");
+                       "given with --skull-image, whose cavity is the skull's "
+                       "inner surface; expected one of them");
+    if (!s.skull_out.empty() && s.skull_image.empty() &&
+        !cl.given("--skull-gap"))
+      throw InputError("",
+                       "--skull-gap",
+                       "--skull-out needs the CSF gap in mm (or a segmented "
+                       "skull: --skull-image)");
     if (s.skull_out.empty() && cl.given("--skull-gap"))
       throw InputError("",
                        "--skull-out",
@@ -325,23 +345,36 @@ namespace
                      std::min(facet_distance, chord_fraction * facet_size);
   }
 
-  /// Write the skull and report its distances to the mesh's surface nodes
-  /// (@p mesh in metres).
+  /// Write the skull (the offset of @p image, or the boundary of the
+  /// @p cavity of a segmented skull) and report its distances to the
+  /// mesh's surface nodes (@p mesh in metres).
   void
   write_skull(const LabelledImage   &image,
+              const LabelledImage   &cavity,
               const MeshDescription &mesh,
               const MesherSettings  &s)
   {
-    dealii::Timer      timer;
+    dealii::Timer timer;
+    const bool    segmented = !s.skull_image.empty();
+    // A segmented skull: the boundary of the cavity its mask encloses.
     const unsigned int n_triangles =
-      write_enclosing_surface(image,
-                              s.skull_gap,
-                              s.skull_closing,
-                              s.skull_facet_size,
-                              skull_facet_distance(s.options.facet_distance,
-                                                   s.skull_gap,
-                                                   s.skull_facet_size),
-                              s.skull_out);
+      segmented ?
+        write_enclosing_surface(cavity,
+                                0,
+                                0,
+                                s.skull_facet_size,
+                                skull_facet_distance(s.options.facet_distance,
+                                                     0,
+                                                     s.skull_facet_size),
+                                s.skull_out) :
+        write_enclosing_surface(image,
+                                s.skull_gap,
+                                s.skull_closing,
+                                s.skull_facet_size,
+                                skull_facet_distance(s.options.facet_distance,
+                                                     s.skull_gap,
+                                                     s.skull_facet_size),
+                                s.skull_out);
     const Obstacle skull(s.skull_out, 1e-3, true);
     double         min_gap = 1e9, max_gap = 0, sum = 0;
     unsigned int   outside = 0;
@@ -355,8 +388,10 @@ namespace
         outside += gap < 0;
       }
     std::cout << "skull " << s.skull_out << ": " << n_triangles
-              << " triangles, gap " << s.skull_gap << " mm, in "
-              << timer.wall_time()
+              << (segmented ?
+                    " triangles, the inner surface of " + s.skull_image :
+                    " triangles, gap " + number_text(s.skull_gap) + " mm")
+              << ", in " << timer.wall_time()
               << " s; distance from the mesh's surface nodes to it: min "
               << min_gap << ", mean " << sum / nodes.size() << ", max "
               << max_gap << " mm" << std::endl;
@@ -397,6 +432,7 @@ main(int argc, char **argv)
                             "--skull-gap",
                             "--skull-closing",
                             "--skull-facet-size",
+                            "--skull-image",
                             "--label-names",
                             "--label-map",
                             "--unlisted-labels"});
@@ -405,9 +441,16 @@ main(int argc, char **argv)
           std::cout << usage;
           return 0;
         }
-      const MesherSettings s     = read_settings(cl);
-      LabelledImage        image = read_labelled_image(s.image_file, "--image");
-      const LabelNames     names = prepare_labels(image, s);
+      const MesherSettings s = read_settings(cl);
+      // A segmented skull is checked before any work is written.
+      const LabelledImage cavity =
+        s.skull_image.empty() ?
+          LabelledImage() :
+          skull_cavity(read_labelled_image(s.skull_image, "--skull-image"),
+                       s.skull_image,
+                       "--skull-image");
+      LabelledImage    image = read_labelled_image(s.image_file, "--image");
+      const LabelNames names = prepare_labels(image, s);
       report_image(image, s.image_file, names);
 
       // The closed image is meshed; the skull comes from the image as read.
@@ -429,7 +472,7 @@ main(int argc, char **argv)
                 << (names.empty() ? "" : ", with the names of its labels")
                 << ")" << std::endl;
       if (!s.skull_out.empty())
-        write_skull(image, in_metres, s);
+        write_skull(image, cavity, in_metres, s);
     }
   catch (const std::exception &exc)
     {

@@ -8,6 +8,11 @@
 #                      300 for the outer ball, 2035 for the inner one
 #   negative_label.nii int16, 8^3 voxels, label 5 with one voxel -3
 #   fractional_label.nii float32, 8^3 voxels, label 2 with one voxel 1.5
+#   skull_shell.nii    a segmented skull for sphere_labels.nii: on a grid of
+#                      28^3 voxels of 2 mm (identity map, origin shifted), bone
+#                      between 22 and 27 mm from the ball's centre, a cavity
+#                      inside (the ball's 18 mm radius 4 mm within it)
+#   skull_open.nii     the same shell with a 12 mm hole (no cavity)
 import struct
 
 TYPES = {'uint8': (2, 8, 'B'), 'int16': (4, 16, 'h'), 'float32': (16, 32, 'f')}
@@ -50,3 +55,18 @@ write('tests/data/negative_label.nii', 8, 1.0, small, block, 'int16')
 block = [2.0] * 512
 block[7] = 1.5
 write('tests/data/fractional_label.nii', 8, 1.0, small, block, 'float32')
+
+m = 28
+shell_srow = [[s, 0, 0, -12.0], [0, s, 0, -24.0], [0, 0, s, 6.0]]
+shell, open_shell = [], []
+for k in range(m):
+    for j in range(m):
+        for i in range(m):
+            x = (s * i - 12.0, s * j - 24.0, s * k + 6.0)
+            r = sum((x[d] - centre[d]) ** 2 for d in range(3)) ** 0.5
+            bone = 22 <= r <= 27
+            shell.append(1 if bone else 0)
+            hole = x[2] - centre[2] > 15 and ((x[0] - centre[0]) ** 2 + (x[1] - centre[1]) ** 2) ** 0.5 < 6
+            open_shell.append(1 if bone and not hole else 0)
+write('tests/data/skull_shell.nii', m, s, shell_srow, shell)
+write('tests/data/skull_open.nii', m, s, shell_srow, open_shell)
