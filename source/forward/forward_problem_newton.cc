@@ -157,6 +157,140 @@ namespace RestShape
     return false;
   }
 
+  namespace
+  {
+    /// Step lengths tried by the line search: 1, 1/2, ..., 1/2^11.
+    constexpr unsigned int line_search_trials = 12;
+    /// Armijo's sufficient decrease.
+    constexpr double armijo = 1e-4;
+  } // namespace
+
+  ForwardProblem::NewtonState
+  ForwardProblem::convergence_check(SolveStatistics &stats,
+                                    const double     residual,
+                                    const double     reference,
+                                    const bool       set_changed,
+                                    unsigned int    &corrections)
+  {
+    const double tol = parameters.solver.newton_tolerance;
+    const bool   floor =
+      residual > tol * reference &&
+      at_round_off_floor(stats.residual_history, residual / reference, tol);
+    if (!((residual <= tol * reference || floor) &&
+          (contact == nullptr || (!set_changed && contact->is_satisfied()))))
+      return NewtonState::iterate;
+    if (floor)
+      pcout << format("      Newton: |R|/|f| = %.2e has stopped "
+                      "decreasing (round-off; tolerance %.0e): "
+                      "converged there",
+                      residual / reference,
+                      tol)
+            << std::endl;
+    if (contact == nullptr)
+      return NewtonState::converged;
+    if (contact->thaw_if_adhesive(residual_raw))
+      {
+        pcout << "      active nodes pull on the obstacle: released"
+              << contact->progress_text() << std::endl;
+        return NewtonState::iterate;
+      }
+    if (contact_conditions_hold(stats, reference, corrections))
+      return NewtonState::converged;
+    return stats.failure.empty() ? NewtonState::iterate : NewtonState::failed;
+  }
+
+  unsigned int
+  ForwardProblem::linear_step(const double               residual,
+                              const double               target,
+                              std::pair<double, double> &previous,
+                              SolveStatistics           &stats)
+  {
+    newton_update = 0;
+    const double eta =
+      linear_tolerance(residual, previous.first, previous.second, target);
+    previous                = {residual, eta};
+    unsigned int iterations = 0;
+    {
+      TimerOutput::Scope scope(timer, "Linear solve");
+      iterations =
+        linear_solver->solve(tangent, newton_update, rhs_newton, eta);
+      stats.linear_iterations += iterations;
+    }
+    constraints_newton.distribute(newton_update);
+    ++stats.newton_iterations;
+    return iterations;
+  }
+
+  ForwardProblem::LineSearchResult
+  ForwardProblem::line_search(const double residual,
+                              const double reference,
+                              const bool   set_changed)
+  {
+    // Merit: the total potential energy (Armijo), which the Newton
+    // direction descends where the tangent is positive definite; or, where
+    // the energy cannot resolve the change (near convergence) or the
+    // tangent is indefinite, the residual norm. A step that changes the
+    // contact constraints is taken whole (as far as contact allows: no
+    // step carries the body through the obstacle).
+    const double     tol          = parameters.solver.newton_tolerance;
+    const double     energy_start = total_energy;
+    const double     slope        = -(residual_condensed * newton_update);
+    const VectorType d_start      = d;
+    LineSearchResult ls;
+    ls.alpha_max = contact != nullptr ? contact->max_step(newton_update) : 1.;
+    ls.alpha     = ls.alpha_max;
+    for (unsigned int trial = 0; trial < line_search_trials;
+         ++trial, ls.alpha *= 0.5)
+      {
+        d = d_start;
+        d.add(ls.alpha, newton_update);
+        d_ghost = d;
+        if (!assemble(Assemble::residual))
+          {
+            ++ls.inverted_trials;
+            continue;
+          }
+        ls.trial_residual = residual_condensed.l2_norm();
+        ls.accepted       = (ls.alpha == ls.alpha_max && set_changed) ||
+                      ls.trial_residual <= (1 - armijo * ls.alpha) * residual ||
+                      ls.trial_residual <= tol * reference ||
+                      (slope < 0 && total_energy <=
+                                      energy_start + armijo * ls.alpha * slope);
+        if (ls.accepted)
+          return ls;
+      }
+    d       = d_start;
+    d_ghost = d;
+    return ls;
+  }
+
+  void
+  ForwardProblem::print_newton_step(const unsigned int      it,
+                                    const double            relative_residual,
+                                    const double            reference,
+                                    const LineSearchResult &ls,
+                                    const unsigned int      linear_iterations,
+                                    const double            shift) const
+  {
+    pcout << "      Newton " << std::setw(2) << it
+          << format(": |R|/|f| %9.3e -> %9.3e, step %5.3f",
+                    relative_residual,
+                    ls.accepted ? ls.trial_residual / reference :
+                                  relative_residual,
+                    ls.alpha)
+          << (ls.inverted_trials > 0 ?
+                " (" + std::to_string(ls.inverted_trials) +
+                  " shorter: a cell inverted)" :
+                std::string())
+          << (linear_solver_type == LinearSolverType::cg_amg ?
+                ", " + linear_solver->last_method + " " +
+                  std::to_string(linear_iterations) + " its" :
+                std::string())
+          << (contact != nullptr ? contact->progress_text() : std::string())
+          << (shift > 0 ? format(", shift %.0e", shift) : std::string())
+          << std::endl;
+  }
+
   bool
   ForwardProblem::newton(SolveStatistics &stats)
   {
@@ -164,48 +298,24 @@ namespace RestShape
     if (contact != nullptr)
       contact->begin_solve(d_ghost);
     stats.cells_inverted = false;
-
+    stats.residual_history.clear();
     double reference = 0;
     // Inexact Newton: the previous step's residual and linear tolerance.
-    double previous_residual = 0, previous_eta = 0;
-    stats.residual_history.clear();
-    // adaptive: the consistent tangent, but after a step the line search
-    // had to shorten, one step with the projected one.
-    const TangentType chosen = parameters.discretization.tangent;
-    // Tangent shift > 0 (adaptive only): Levenberg-Marquardt instead of the
-    // projected step; mu is the current relative diagonal shift.
-    const double mu_start =
-      chosen == TangentType::adaptive ? parameters.solver.tangent_shift : 0.;
-    double mu = 0;
-    // Beyond this shift a step is below 1e-4 of a Jacobi step: raising it
-    // further cannot help (measured: P2 at gravity x 10 raised it to 1e95
-    // in 90 useless steps per load increment; increments that converged
-    // never needed more than 1). Then the Newton solve fails, and the load
-    // increment is halved.
-    const double mu_cap = 1e4;
-    const auto   raise  = [&]() {
-      mu = mu == 0 ? mu_start : 10 * mu;
-      return mu <= mu_cap;
-    };
-    // inverted: the step's line search met inverted cells (the last of
-    // them is in inverted_cells).
+    std::pair<double, double> previous{0, 0};
+    TangentStrategy           strategy(parameters.discretization.tangent,
+                             parameters.solver.tangent_shift);
     const auto shift_failure = [&](const double residual, const bool inverted) {
       return format("Newton stalls at |R|/|f| = %.3e: its steps stay "
                     "short even with the tangent's diagonal scaled by "
                     "1 + %.0e (the largest shift tried)",
                     residual / reference,
-                    mu_cap) +
+                    TangentStrategy::max_shift) +
              (inverted ? "; the last shortened step: " + inverted_cells_text() :
                          std::string());
     };
-    tangent_type =
-      chosen == TangentType::adaptive ? TangentType::consistent : chosen;
     // The last pass only checks convergence: the state the last allowed
-    // step reached counts (it used to be thrown away at the cap even when
-    // it met the tolerance).
+    // step reached counts.
     const unsigned int max_steps = parameters.solver.max_newton_iterations;
-    // Step lengths tried by the line search: 1, 1/2, ..., 1/2^11.
-    const unsigned int line_search_trials = 12;
     // Rounds of enforce_conditions() after converged states that violated
     // the contact conditions.
     unsigned int corrections = 0;
@@ -219,15 +329,15 @@ namespace RestShape
             stats.active_set_changes += set_changed;
           }
         make_newton_constraints();
-
+        tangent_type = strategy.tangent();
         if (!assemble(Assemble::residual_and_matrix))
           {
             stats.failure =
               "at the start of the Newton step " + inverted_cells_text();
             return false;
           }
-        if (mu > 0)
-          shift_diagonal(mu);
+        if (strategy.shift() > 0)
+          shift_diagonal(strategy.shift());
         const double residual = residual_condensed.l2_norm();
         if (reference == 0)
           reference = external_condensed.l2_norm();
@@ -236,170 +346,65 @@ namespace RestShape
         stats.residual  = residual;
         stats.reference = reference;
 
-        const bool floor =
-          residual > tol * reference &&
-          at_round_off_floor(stats.residual_history, residual / reference, tol);
-        if ((residual <= tol * reference || floor) &&
-            (contact == nullptr || (!set_changed && contact->is_satisfied())))
-          {
-            if (floor)
-              pcout << format("      Newton: |R|/|f| = %.2e has stopped "
-                              "decreasing (round-off; tolerance %.0e): "
-                              "converged there",
-                              residual / reference,
-                              tol)
-                    << std::endl;
-            if (contact == nullptr)
-              return true;
-            if (contact->thaw_if_adhesive(residual_raw))
-              pcout << "      active nodes pull on the obstacle: released"
-                    << contact->progress_text() << std::endl;
-            else if (contact_conditions_hold(stats, reference, corrections))
-              return true;
-            else if (!stats.failure.empty())
-              return false;
-          }
+        const NewtonState state = convergence_check(
+          stats, residual, reference, set_changed, corrections);
+        if (state != NewtonState::iterate)
+          return state == NewtonState::converged;
         if (it > max_steps)
           break;
 
-        newton_update                  = 0;
-        unsigned int linear_iterations = 0;
-        const double eta               = linear_tolerance(residual,
-                                            previous_residual,
-                                            previous_eta,
-                                            tol * reference);
-        previous_residual              = residual;
-        previous_eta                   = eta;
-        {
-          TimerOutput::Scope scope(timer, "Linear solve");
-          linear_iterations =
-            linear_solver->solve(tangent, newton_update, rhs_newton, eta);
-          stats.linear_iterations += linear_iterations;
-        }
-        constraints_newton.distribute(newton_update);
-        ++stats.newton_iterations;
-
-        // Backtracking. Merit: the total potential energy (Armijo), which
-        // the Newton direction descends where the tangent is positive
-        // definite; or, where the energy cannot resolve the change (near
-        // convergence) or the tangent is indefinite, the residual norm. A
-        // step that changes the contact constraints is taken whole (as far
-        // as contact allows: no step carries the body through the
-        // obstacle).
-        const double     energy_start = total_energy;
-        const double     slope        = -(residual_condensed * newton_update);
-        const VectorType d_start      = d;
-        const double     alpha_max =
-          contact != nullptr ? contact->max_step(newton_update) : 1.;
-        double       alpha           = alpha_max;
-        bool         accepted        = false;
-        double       trial_residual  = 0;
-        unsigned int inverted_trials = 0;
-        for (unsigned int ls = 0; ls < line_search_trials && !accepted;
-             ++ls, alpha *= 0.5)
+        const unsigned int linear_iterations =
+          linear_step(residual, tol * reference, previous, stats);
+        const double           shift = strategy.shift();
+        const LineSearchResult ls =
+          line_search(residual, reference, set_changed);
+        print_newton_step(
+          it, residual / reference, reference, ls, linear_iterations, shift);
+        if (ls.accepted)
           {
-            d = d_start;
-            d.add(alpha, newton_update);
-            d_ghost = d;
-            if (!assemble(Assemble::residual))
+            stats.residual_history.push_back(ls.trial_residual / reference);
+            const bool within_shift =
+              strategy.accepted(ls.alpha < ls.alpha_max);
+            tangent_type = strategy.tangent();
+            if (!within_shift)
               {
-                ++inverted_trials;
-                continue;
-              }
-            trial_residual = residual_condensed.l2_norm();
-            accepted       = (alpha == alpha_max && set_changed) ||
-                       trial_residual <= (1 - 1e-4 * alpha) * residual ||
-                       trial_residual <= tol * reference ||
-                       (slope < 0 &&
-                        total_energy <= energy_start + 1e-4 * alpha * slope);
-            if (accepted)
-              break;
-          }
-        pcout << "      Newton " << std::setw(2) << it
-              << format(": |R|/|f| %9.3e -> %9.3e, step %5.3f",
-                        residual / reference,
-                        (accepted ? trial_residual : residual) / reference,
-                        alpha)
-              << (inverted_trials > 0 ? " (" + std::to_string(inverted_trials) +
-                                          " shorter: a cell inverted)" :
-                                        std::string())
-              << (linear_solver_type == LinearSolverType::cg_amg ?
-                    ", " + linear_solver->last_method + " " +
-                      std::to_string(linear_iterations) + " its" :
-                    std::string())
-              << (contact != nullptr ? contact->progress_text() : std::string())
-              << (mu > 0 ? format(", shift %.0e", mu) : std::string())
-              << std::endl;
-        if (accepted)
-          {
-            stats.residual_history.push_back(trial_residual / reference);
-            if (mu_start > 0)
-              {
-                if (alpha < alpha_max)
-                  {
-                    if (!raise())
-                      {
-                        stats.failure =
-                          shift_failure(trial_residual, inverted_trials > 0);
-                        return false;
-                      }
-                  }
-                else
-                  mu = mu < 1e-3 * mu_start ? 0 : 0.1 * mu;
-              }
-            else if (chosen == TangentType::adaptive)
-              tangent_type =
-                (tangent_type == TangentType::consistent && alpha < alpha_max) ?
-                  TangentType::projected :
-                  TangentType::consistent;
-          }
-        else if (chosen == TangentType::adaptive &&
-                 tangent_type == TangentType::consistent)
-          {
-            // No step along the consistent direction helps: from the same
-            // state, a larger shift (Tangent shift > 0) or the projected
-            // tangent.
-            d       = d_start;
-            d_ghost = d;
-            if (mu_start > 0)
-              {
-                if (!raise())
-                  {
-                    stats.failure =
-                      shift_failure(residual, inverted_trials > 0);
-                    return false;
-                  }
-                pcout << "      no step along this tangent helps: the "
-                         "diagonal shift raised, from the same state"
-                      << std::endl;
-              }
-            else
-              {
-                pcout << "      no step along the consistent tangent helps: "
-                         "the projected one from the same state"
-                      << std::endl;
-                tangent_type = TangentType::projected;
+                stats.failure =
+                  shift_failure(ls.trial_residual, ls.inverted_trials > 0);
+                return false;
               }
             continue;
           }
-        if (!accepted)
+        const TangentStrategy::Retry retry = strategy.rejected();
+        tangent_type                       = strategy.tangent();
+        switch (retry)
           {
-            d       = d_start;
-            d_ghost = d;
-            stats.failure =
-              format("the line search could not reduce the residual "
-                     "(|R|/|f| = %.3e)",
-                     residual / reference);
-            stats.cells_inverted = inverted_trials > 0;
-            if (stats.cells_inverted)
-              stats.failure +=
-                format("; %.0f of its %.0f trial steps inverted cells, the "
-                       "shortest of them ",
-                       inverted_trials,
-                       line_search_trials) +
-                inverted_cells_text();
-            return false;
+            case TangentStrategy::Retry::larger_shift:
+              pcout << "      no step along this tangent helps: the "
+                       "diagonal shift raised, from the same state"
+                    << std::endl;
+              continue;
+            case TangentStrategy::Retry::projected:
+              pcout << "      no step along the consistent tangent helps: "
+                       "the projected one from the same state"
+                    << std::endl;
+              continue;
+            case TangentStrategy::Retry::shift_exhausted:
+              stats.failure = shift_failure(residual, ls.inverted_trials > 0);
+              return false;
+            case TangentStrategy::Retry::none:
+              break;
           }
+        stats.failure        = format("the line search could not reduce the "
+                                      "residual (|R|/|f| = %.3e)",
+                               residual / reference);
+        stats.cells_inverted = ls.inverted_trials > 0;
+        if (stats.cells_inverted)
+          stats.failure += format("; %.0f of its %.0f trial steps inverted "
+                                  "cells, the shortest of them ",
+                                  ls.inverted_trials,
+                                  line_search_trials) +
+                           inverted_cells_text();
+        return false;
       }
     stats.failure =
       "no convergence in " + std::to_string(max_steps) +

@@ -201,13 +201,125 @@ namespace RestShape
     }
   } // namespace
 
+  namespace
+  {
+    /// The sections of a VTK file that make the mesh.
+    struct VtkContent
+    {
+      std::vector<Point<3>>                    points;
+      std::vector<std::vector<long>>           cells;
+      std::vector<long>                        types;
+      std::map<std::string, std::vector<long>> arrays; // cell data
+    };
+
+    /// CELLS: "n size", then "k v0 ... v(k-1)" per cell, or (file version
+    /// 5.1) OFFSETS and CONNECTIVITY arrays.
+    std::vector<std::vector<long>>
+    read_vtk_cells(VtkWords &words)
+    {
+      const long  n = words.integer("CELLS"), size = words.integer("CELLS");
+      std::string peek = words.word("CELLS");
+      if (peek == "OFFSETS")
+        return read_vtk_offsets(words, n, size);
+      std::vector<std::vector<long>> cells(n);
+      char                          *end = nullptr;
+      long                           k   = std::strtol(peek.c_str(), &end, 10);
+      if (end == peek.c_str() || *end != '\0')
+        words.fail("'" + peek + "' in CELLS is not a whole number");
+      for (long c = 0; c < n; ++c)
+        {
+          if (c > 0)
+            k = words.integer("CELLS");
+          cells[c].resize(k);
+          for (long &v : cells[c])
+            v = words.integer("CELLS");
+        }
+      return cells;
+    }
+
+    /// SCALARS name type [n]; LOOKUP_TABLE t; values. FIELD name k; then k
+    /// arrays "name components tuples type" and values. Arrays with one
+    /// value per cell go into @p content.
+    void
+    read_vtk_arrays(VtkWords &words, const bool scalars, VtkContent &content)
+    {
+      std::string name     = words.word("the array name");
+      long        n_arrays = 1;
+      if (scalars)
+        words.skip_line();
+      else
+        n_arrays = words.integer("FIELD");
+      for (long a = 0; a < n_arrays; ++a)
+        {
+          long n_values = content.types.size();
+          if (scalars)
+            {
+              if (words.word("LOOKUP_TABLE") != "LOOKUP_TABLE")
+                words.fail("no LOOKUP_TABLE after SCALARS " + name);
+              words.word("the lookup table");
+            }
+          else
+            {
+              name     = words.word("the array name");
+              n_values = words.integer(name) * words.integer(name);
+              words.word("the array type");
+            }
+          std::vector<double> values(n_values);
+          for (double &v : values)
+            v = words.number(name);
+          if (n_values == long(content.types.size()))
+            content.arrays[name].assign(values.begin(), values.end());
+        }
+    }
+
+    /// Everything after the DATASET line, up to POINT_DATA.
+    VtkContent
+    read_vtk_content(VtkWords &words, const double length_unit)
+    {
+      VtkContent  content;
+      std::string key;
+      while (words.next(key))
+        if (key == "POINTS")
+          {
+            const long n = words.integer("POINTS");
+            words.word("the POINTS type");
+            for (long p = 0; p < n; ++p)
+              {
+                Point<3> x;
+                for (unsigned int d = 0; d < 3; ++d)
+                  x[d] = words.number("POINTS") * length_unit;
+                content.points.push_back(x);
+              }
+          }
+        else if (key == "CELLS")
+          content.cells = read_vtk_cells(words);
+        else if (key == "CELL_TYPES")
+          {
+            content.types.resize(words.integer("CELL_TYPES"));
+            for (long &t : content.types)
+              t = words.integer("CELL_TYPES");
+          }
+        else if (key == "SCALARS" || key == "FIELD")
+          read_vtk_arrays(words, key == "SCALARS", content);
+        else if (key == "CELL_DATA")
+          words.integer("CELL_DATA");
+        else if (key == "POINT_DATA")
+          break; // only cell data is read
+        else
+          words.fail("unexpected '" + key + "'");
+      if (content.cells.size() != content.types.size())
+        words.fail("CELLS and CELL_TYPES differ in length");
+      return content;
+    }
+  } // namespace
+
   MeshDescription
   read_vtk_mesh(const std::string &file,
                 const double       length_unit,
                 const std::string &parameter)
   {
     std::ifstream in = open(file, parameter);
-    std::string   header, title, format;
+    std::string   header, title;
     std::getline(in, header);
     std::getline(in, title);
     VtkWords words(in, file, parameter);
@@ -219,124 +331,37 @@ namespace RestShape
         words.word("the dataset type") != "UNSTRUCTURED_GRID")
       words.fail("not an unstructured grid");
 
-    MeshDescription                          mesh;
-    std::vector<std::vector<long>>           cells;
-    std::vector<long>                        types;
-    std::map<std::string, std::vector<long>> arrays;
-    std::string                              key;
-    while (words.next(key))
-      if (key == "POINTS")
-        {
-          const long n = words.integer("POINTS");
-          words.word("the POINTS type");
-          for (long p = 0; p < n; ++p)
-            {
-              Point<3> x;
-              for (unsigned int d = 0; d < 3; ++d)
-                x[d] = words.number("POINTS") * length_unit;
-              mesh.vertices.push_back(x);
-            }
-        }
-      else if (key == "CELLS")
-        {
-          const long  n = words.integer("CELLS"), size = words.integer("CELLS");
-          std::string peek = words.word("CELLS");
-          if (peek == "OFFSETS")
-            cells = read_vtk_offsets(words, n, size);
-          else
-            {
-              cells.resize(n);
-              char *end = nullptr;
-              long  k   = std::strtol(peek.c_str(), &end, 10);
-              if (end == peek.c_str() || *end != '\0')
-                words.fail("'" + peek + "' in CELLS is not a whole number");
-              for (long c = 0; c < n; ++c)
-                {
-                  if (c > 0)
-                    k = words.integer("CELLS");
-                  cells[c].resize(k);
-                  for (long &v : cells[c])
-                    v = words.integer("CELLS");
-                }
-            }
-        }
-      else if (key == "CELL_TYPES")
-        {
-          types.resize(words.integer("CELL_TYPES"));
-          for (long &t : types)
-            t = words.integer("CELL_TYPES");
-        }
-      else if (key == "SCALARS" || key == "FIELD")
-        {
-          // SCALARS name type [n]; LOOKUP_TABLE t; values. FIELD name k;
-          // then k arrays "name components tuples type" and values.
-          const bool  scalars  = key == "SCALARS";
-          std::string name     = words.word("the array name");
-          long        n_arrays = 1;
-          if (scalars)
-            words.skip_line();
-          else
-            n_arrays = words.integer("FIELD");
-          for (long a = 0; a < n_arrays; ++a)
-            {
-              long n_values = types.size();
-              if (scalars)
-                {
-                  if (words.word("LOOKUP_TABLE") != "LOOKUP_TABLE")
-                    words.fail("no LOOKUP_TABLE after SCALARS " + name);
-                  words.word("the lookup table");
-                }
-              else
-                {
-                  name     = words.word("the array name");
-                  n_values = words.integer(name) * words.integer(name);
-                  words.word("the array type");
-                }
-              std::vector<double> values(n_values);
-              for (double &v : values)
-                v = words.number(name);
-              if (n_values == long(types.size()))
-                arrays[name].assign(values.begin(), values.end());
-            }
-        }
-      else if (key == "CELL_DATA")
-        words.integer("CELL_DATA");
-      else if (key == "POINT_DATA")
-        break; // only cell data is read
-      else
-        words.fail("unexpected '" + key + "'");
-
-    if (cells.size() != types.size())
-      words.fail("CELLS and CELL_TYPES differ in length");
-    const std::vector<long> &labels = arrays[label_array(arrays, words)];
-    for (unsigned int c = 0; c < cells.size(); ++c)
+    VtkContent               c      = read_vtk_content(words, length_unit);
+    const std::vector<long> &labels = c.arrays[label_array(c.arrays, words)];
+    MeshDescription          mesh;
+    mesh.vertices = c.points;
+    for (unsigned int i = 0; i < c.cells.size(); ++i)
       {
-        if (types[c] != 10 && types[c] != 12)
+        const std::string cell_text = "cell " + std::to_string(i);
+        if (c.types[i] != 10 && c.types[i] != 12)
           {
-            if (types[c] >= 10)
-              words.fail("cell " + std::to_string(c) + " has VTK type " +
-                         std::to_string(types[c]) +
+            if (c.types[i] >= 10)
+              words.fail(cell_text + " has VTK type " +
+                         std::to_string(c.types[i]) +
                          "; expected linear tetrahedra (10) or hexahedra "
                          "(12)");
             continue; // vertices, lines, faces
           }
         std::vector<unsigned int> v;
-        for (const long i : cells[c])
+        for (const long p : c.cells[i])
           {
-            if (i < 0 || i >= long(mesh.vertices.size()))
-              words.fail("cell " + std::to_string(c) +
-                         " refers to a point that does not exist");
-            v.push_back(i);
+            if (p < 0 || p >= long(mesh.vertices.size()))
+              words.fail(cell_text + " refers to a point that does not exist");
+            v.push_back(p);
           }
-        if (v.size() != (types[c] == 10 ? 4u : 8u))
-          words.fail("cell " + std::to_string(c) + " has " +
-                     std::to_string(v.size()) + " points for its type");
-        if (labels[c] < 0 || labels[c] > max_label)
-          words.fail("cell " + std::to_string(c) + " has label " +
-                     std::to_string(labels[c]) + ", outside 0.." +
-                     std::to_string(max_label));
+        if (v.size() != (c.types[i] == 10 ? 4u : 8u))
+          words.fail(cell_text + " has " + std::to_string(v.size()) +
+                     " points for its type");
+        if (labels[i] < 0 || labels[i] > max_label)
+          words.fail(cell_text + " has label " + std::to_string(labels[i]) +
+                     ", outside 0.." + std::to_string(max_label));
         CellData<3> cell = make_cell(v);
-        cell.material_id = Label(labels[c]);
+        cell.material_id = Label(labels[i]);
         mesh.cells.push_back(cell);
       }
     return finish(std::move(mesh), file, parameter);

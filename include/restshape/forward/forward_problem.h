@@ -21,6 +21,7 @@
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/material.h>
 #include <restshape/forward/surface_load.h>
+#include <restshape/forward/tangent_strategy.h>
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <algorithm>
@@ -418,9 +419,63 @@ namespace RestShape
       CopyData                                                   &copy,
       const Assemble                                              what) const;
 
-    /// Newton for the current target load and rest shape.
+    /// Newton for the current target load and rest shape: per step the
+    /// convergence check, the linear step, the line search, the tangent
+    /// for the next step (TangentStrategy).
     bool
     newton(SolveStatistics &stats);
+
+    /// Newton's state at the top of a step.
+    enum class NewtonState
+    {
+      converged,
+      failed, // stats.failure says why
+      iterate
+    };
+    /// Whether the state meets the tolerance (or has reached the round-off
+    /// floor) and, with contact, the contact conditions; releases adhesive
+    /// nodes and enforces the conditions (++@p corrections) on the way.
+    NewtonState
+    convergence_check(SolveStatistics &stats,
+                      const double     residual,
+                      const double     reference,
+                      const bool       set_changed,
+                      unsigned int    &corrections);
+
+    /// Solve the linear system of a Newton step into newton_update
+    /// (Inexact Newton: @p previous holds the last step's residual and
+    /// linear tolerance); returns the linear iterations.
+    unsigned int
+    linear_step(const double               residual,
+                const double               target,
+                std::pair<double, double> &previous,
+                SolveStatistics           &stats);
+
+    /// What the line search of a Newton step found.
+    struct LineSearchResult
+    {
+      double       alpha_max       = 1; // the longest step contact allows
+      double       alpha           = 1; // the step taken (if accepted)
+      double       trial_residual  = 0;
+      bool         accepted        = false;
+      unsigned int inverted_trials = 0;
+    };
+    /// Backtrack along newton_update (Armijo on the potential energy, or
+    /// on the residual norm); the state is restored when no step is
+    /// accepted.
+    LineSearchResult
+    line_search(const double residual,
+                const double reference,
+                const bool   set_changed);
+
+    /// The progress line of Newton step @p it.
+    void
+    print_newton_step(const unsigned int      it,
+                      const double            relative_residual,
+                      const double            reference,
+                      const LineSearchResult &ls,
+                      const unsigned int      linear_iterations,
+                      const double            shift) const;
     /// At a converged Newton state with contact: whether the contact
     /// conditions hold against the obstacle (last_conditions); if not,
     /// enforce them (false; Newton goes on, ++@p corrections) or, when that
