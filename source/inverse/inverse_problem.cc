@@ -268,34 +268,31 @@ namespace RestShape
   }
 
   InverseResult
-  InverseProblem::run(const VectorType  &initial_rest,
-                      const unsigned int first_step,
-                      const VectorType  *guess)
+  InverseProblem::finish(InverseResult &result, const std::string &reason) const
   {
-    InverseResult result;
-    history.clear();
-    const LoadState load   = forward.scene_load();
-    const auto      finish = [&](const std::string &reason) {
-      result.reason     = reason;
-      const auto e      = target_errors();
-      result.mean_error = e.first;
-      result.max_error  = e.second;
-      const auto image  = forward.nodal_norms(forward.displacement());
-      result.mean_image_error = image.first;
-      result.max_image_error  = image.second;
-      if (!reason.empty())
-        pcout << "Inverse iteration stopped: " << reason << std::endl;
-      return result;
-    };
+    result.reason           = reason;
+    const auto e            = target_errors();
+    result.mean_error       = e.first;
+    result.max_error        = e.second;
+    const auto image        = forward.nodal_norms(forward.displacement());
+    result.mean_image_error = image.first;
+    result.max_image_error  = image.second;
+    if (!reason.empty())
+      pcout << "Inverse iteration stopped: " << reason << std::endl;
+    return result;
+  }
 
-    // Iteration 0: the forward problem from the initial rest shape (the
-    // target itself unless a rest shape was given), loaded from zero or
-    // started from the guess.
-    set_admissible_target(result);
+  SolveStatistics
+  InverseProblem::first_solve(const VectorType &initial_rest,
+                              const VectorType *guess,
+                              const LoadState  &load,
+                              InverseResult    &result,
+                              VectorType       &start)
+  {
     // Where the image crosses the obstacle, the first rest shape is the
     // admissible target (else the nodes beyond it start free, on the wrong
     // side, and may be all that would hold the body).
-    VectorType   start = initial_rest;
+    start              = initial_rest;
     unsigned int n_bad = 0;
     const bool   from_admissible =
       guess == nullptr && initial_rest.linfty_norm() == 0 &&
@@ -322,10 +319,78 @@ namespace RestShape
       stats = forward.solve_from(guess, load, initial_rest);
     ++result.forward_solves;
     result.newton_iterations += stats.newton_iterations;
+    return stats;
+  }
+
+  std::string
+  InverseProblem::next_rest_shape(const VectorType    &w,
+                                  const VectorType    &f,
+                                  AndersonAccelerator &anderson,
+                                  const bool           accelerate,
+                                  const unsigned int   iteration,
+                                  const double         last_error,
+                                  VectorType          &candidate,
+                                  bool                &accelerated) const
+  {
+    VectorType plain = w;
+    plain += f;
+    candidate   = plain;
+    accelerated = false;
+    if (accelerate)
+      {
+        candidate   = anderson.next(w, f);
+        accelerated = anderson.columns_used() > 0;
+      }
+    // Never a rest shape with an inverted or degenerate cell.
+    unsigned int n_bad = 0;
+    std::string  where;
+    if (forward.rest_shape_is_valid(candidate, n_bad))
+      return "";
+    if (accelerated)
+      {
+        pcout << "  Anderson step would invert " << n_bad
+              << " cells: plain update" << std::endl;
+        anderson.reset();
+        anderson.next(w, f);
+        candidate   = plain;
+        accelerated = false;
+      }
+    constexpr double shortest = 1. / 64;
+    for (double beta = 0.5;
+         !forward.rest_shape_is_valid(candidate, n_bad, &where);
+         beta /= 2)
+      {
+        if (beta < shortest)
+          return "every rest-shape update, even shortened 64 times, would "
+                 "invert " +
+                 std::to_string(n_bad) + " cells, e.g. " + where +
+                 " (iteration " + std::to_string(iteration) + ", error " +
+                 mm(last_error) + ")";
+        candidate = w;
+        candidate.add(beta, f);
+        pcout << "  The update would invert " << n_bad
+              << " cells: shortened to " << beta << std::endl;
+      }
+    return "";
+  }
+
+  InverseResult
+  InverseProblem::run(const VectorType  &initial_rest,
+                      const unsigned int first_step,
+                      const VectorType  *guess)
+  {
+    InverseResult result;
+    history.clear();
+    const LoadState load = forward.scene_load();
+    set_admissible_target(result);
+    VectorType      start;
+    SolveStatistics stats =
+      first_solve(initial_rest, guess, load, result, start);
     if (!stats.converged)
-      return finish(
-        "the forward solve from the initial rest shape did not converge: " +
-        stats.failure);
+      return finish(result,
+                    "the forward solve from the initial rest shape did not "
+                    "converge: " +
+                      stats.failure);
     record(0, stats, false);
     write_output(first_step, 0);
 
@@ -334,66 +399,36 @@ namespace RestShape
     if (converged(target_errors()))
       {
         result.converged = true;
-        return finish("");
+        return finish(result, "");
       }
 
     const bool accelerate =
       parameters.acceleration == InverseParameters::Acceleration::anderson;
     AndersonAccelerator anderson(parameters.anderson_depth);
     VectorType          w = start, d = forward.zero_vector();
-    d                = forward.displacement();
+    d                = forward.displacement(); // owned layout
     bool force_plain = false;
-
     while (result.iterations < parameters.max_iterations)
       {
         // The fixed point: e = X_target - X_eq = t - d (t: the admissible
         // target's shift); plain update w + e.
         VectorType f = target_shift;
         f -= d;
-        VectorType plain = w;
-        plain += f;
-        VectorType candidate   = plain;
-        bool       accelerated = false;
-        if (accelerate)
-          {
-            if (force_plain)
-              anderson.reset();
-            candidate   = anderson.next(w, f);
-            accelerated = anderson.columns_used() > 0;
-          }
+        if (accelerate && force_plain)
+          anderson.reset();
         force_plain = false;
-
-        // Never a rest shape with an inverted or degenerate cell.
-        unsigned int n_bad = 0;
-        std::string  where;
-        if (!forward.rest_shape_is_valid(candidate, n_bad))
-          {
-            if (accelerated)
-              {
-                pcout << "  Anderson step would invert " << n_bad
-                      << " cells: plain update" << std::endl;
-                anderson.reset();
-                anderson.next(w, f);
-                candidate   = plain;
-                accelerated = false;
-              }
-            for (double beta = 0.5;
-                 !forward.rest_shape_is_valid(candidate, n_bad, &where);
-                 beta /= 2)
-              {
-                if (beta < 1. / 64)
-                  return finish(
-                    "every rest-shape update, even shortened 64 times, would "
-                    "invert " +
-                    std::to_string(n_bad) + " cells, e.g. " + where +
-                    " (iteration " + std::to_string(result.iterations + 1) +
-                    ", error " + mm(stopping.last()) + ")");
-                candidate = w;
-                candidate.add(beta, f);
-                pcout << "  The update would invert " << n_bad
-                      << " cells: shortened to " << beta << std::endl;
-              }
-          }
+        VectorType        candidate;
+        bool              accelerated = false;
+        const std::string impossible  = next_rest_shape(w,
+                                                       f,
+                                                       anderson,
+                                                       accelerate,
+                                                       result.iterations + 1,
+                                                       stopping.last(),
+                                                       candidate,
+                                                       accelerated);
+        if (!impossible.empty())
+          return finish(result, impossible);
 
         // Forward solve from the last equilibrium, the rest shape moving
         // from w to the candidate.
@@ -413,11 +448,12 @@ namespace RestShape
         if (!stats.converged && !accelerated)
           {
             if (!(stats.fraction > 0))
-              return finish("the forward solve of iteration " +
-                            std::to_string(result.iterations + 1) +
-                            " did not converge even for the smallest "
-                            "fraction of the update: " +
-                            stats.failure);
+              return finish(result,
+                            "the forward solve of iteration " +
+                              std::to_string(result.iterations + 1) +
+                              " did not converge even for the smallest "
+                              "fraction of the update: " +
+                              stats.failure);
             pcout << "  The forward solve reached equilibrium at "
                   << stats.fraction
                   << " of the update: that shorter update is taken"
@@ -455,16 +491,17 @@ namespace RestShape
         if (converged(errors))
           {
             result.converged = true;
-            return finish("");
+            return finish(result, "");
           }
         const std::string reason = stopping.check(
           result.iterations, error, partial, stats.fraction, stats.failure);
         if (!reason.empty())
-          return finish(reason);
+          return finish(result, reason);
       }
-    return finish("not converged after " +
-                  std::to_string(parameters.max_iterations) +
-                  " iterations (error " + mm(stopping.last()) + ", tolerance " +
-                  mm(parameters.tolerance) + ")");
+    return finish(result,
+                  "not converged after " +
+                    std::to_string(parameters.max_iterations) +
+                    " iterations (error " + mm(stopping.last()) +
+                    ", tolerance " + mm(parameters.tolerance) + ")");
   }
 } // namespace RestShape

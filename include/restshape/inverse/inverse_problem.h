@@ -118,6 +118,31 @@ namespace RestShape
            const bool             anderson);
     void
     write_output(const unsigned int step, const unsigned int iteration);
+    /// The errors of the last equilibrium into @p result, and @p reason
+    /// (empty: converged) on screen.
+    InverseResult
+    finish(InverseResult &result, const std::string &reason) const;
+    /// Iteration 0: the forward solve from @p initial_rest (or, where the
+    /// image crosses the obstacle, from the admissible target), loaded from
+    /// zero or started from @p guess; @p start: the rest shape it used.
+    SolveStatistics
+    first_solve(const VectorType &initial_rest,
+                const VectorType *guess,
+                const LoadState  &load,
+                InverseResult    &result,
+                VectorType       &start);
+    /// The next rest shape from the iterate @p w and its residual @p f:
+    /// Anderson's (if @p accelerate) or the plain w + f, shortened until
+    /// no cell inverts. Returns "" or why there is none.
+    std::string
+    next_rest_shape(const VectorType    &w,
+                    const VectorType    &f,
+                    AndersonAccelerator &anderson,
+                    const bool           accelerate,
+                    const unsigned int   iteration,
+                    const double         last_error,
+                    VectorType          &candidate,
+                    bool                &accelerated) const;
 
     const InverseParameters             parameters;
     ForwardProblem                     &forward;
