@@ -19,6 +19,7 @@
 //    pieces are given to their neighbours, so that each region is one solid.
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/mesher/image_morphology.h>
 #include <restshape/mesher/labelled_image.h>
 
 #include <algorithm>
@@ -56,60 +57,6 @@ namespace
 {
   constexpr ImageLabel cerebrum = 1, tumour = 2, cerebellum = 3, brainstem = 4,
                        unknown = 255;
-
-  /// 6-neighbours of voxel v of @p image (those inside the grid).
-  template <typename F>
-  void
-  for_neighbours(const LabelledImage &image, const std::size_t v, const F &f)
-  {
-    const std::size_t nx = image.size[0], ny = image.size[1],
-                      nz = image.size[2];
-    const std::size_t i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
-    if (i > 0)
-      f(v - 1);
-    if (i + 1 < nx)
-      f(v + 1);
-    if (j > 0)
-      f(v - nx);
-    if (j + 1 < ny)
-      f(v + nx);
-    if (k > 0)
-      f(v - nx * ny);
-    if (k + 1 < nz)
-      f(v + nx * ny);
-  }
-
-  /// Connected components (6-connectivity) of the voxels where @p in is true;
-  /// returns the component index of every voxel (-1 outside) and their sizes.
-  std::pair<std::vector<int>, std::vector<std::size_t>>
-  components(const LabelledImage &image, const std::vector<bool> &in)
-  {
-    std::vector<int>         component(in.size(), -1);
-    std::vector<std::size_t> sizes;
-    std::deque<std::size_t>  queue;
-    for (std::size_t seed = 0; seed < in.size(); ++seed)
-      if (in[seed] && component[seed] < 0)
-        {
-          const int c     = sizes.size();
-          component[seed] = c;
-          sizes.push_back(0);
-          queue.push_back(seed);
-          while (!queue.empty())
-            {
-              const std::size_t v = queue.front();
-              queue.pop_front();
-              ++sizes[c];
-              for_neighbours(image, v, [&](const std::size_t w) {
-                if (in[w] && component[w] < 0)
-                  {
-                    component[w] = c;
-                    queue.push_back(w);
-                  }
-              });
-            }
-        }
-    return {component, sizes};
-  }
 
   /// Give every brain voxel labelled `unknown` the label of the nearest
   /// (in 6-connected steps through the brain) labelled voxel.
@@ -181,7 +128,7 @@ main(int argc, char **argv)
       for (std::size_t v = 0; v < n; ++v)
         in[v] = brain.labels[v] != 0;
       {
-        const auto [component, sizes] = components(brain, in);
+        const auto [component, sizes] = face_connected_components(brain, in);
         const int largest =
           std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
         for (std::size_t v = 0; v < n; ++v)
@@ -191,7 +138,8 @@ main(int argc, char **argv)
         std::vector<bool> out_of_brain(n);
         for (std::size_t v = 0; v < n; ++v)
           out_of_brain[v] = !in[v];
-        const auto [component, sizes] = components(brain, out_of_brain);
+        const auto [component, sizes] =
+          face_connected_components(brain, out_of_brain);
         const int outside = component[0]; // the corner voxel is background
         for (std::size_t v = 0; v < n; ++v)
           if (!in[v] && component[v] != outside)
@@ -242,7 +190,8 @@ main(int argc, char **argv)
           std::vector<bool> mine(n);
           for (std::size_t v = 0; v < n; ++v)
             mine[v] = labels.labels[v] == label;
-          const auto [component, sizes] = components(labels, mine);
+          const auto [component, sizes] =
+            face_connected_components(labels, mine);
           if (sizes.empty())
             throw InputError(out,
                              "--tumour",

@@ -16,14 +16,6 @@ namespace RestShape
     /// Characters a name cannot hold: blanks and a label list's syntax.
     const std::string forbidden = " \t\r\n,:*\"#";
 
-    /// "12", "1-90": a label or a range of them, as label lists write them.
-    bool
-    looks_like_labels(const std::string &text)
-    {
-      return !text.empty() &&
-             std::isdigit(static_cast<unsigned char>(text[0])) &&
-             text.find_first_not_of("0123456789-") == std::string::npos;
-    }
   } // namespace
 
   bool
@@ -131,9 +123,8 @@ namespace RestShape
         std::string        index, name;
         if (!(words >> index))
           continue;
-        if (!(words >> name) || !looks_like_labels(index) ||
-            index.find('-') != std::string::npos || index.size() > 10 ||
-            std::stol(index) > max_label)
+        const auto range = label_range(index);
+        if (!(words >> name) || !range || range->first != range->second)
           throw InputError(file,
                            option,
                            at +
@@ -143,7 +134,7 @@ namespace RestShape
                              dealii::Utilities::trim(line) + "'");
         try
           {
-            names.add(Label(std::stol(index)), name, file, option);
+            names.add(range->first, name, file, option);
           }
         catch (const InputError &e)
           {
@@ -191,7 +182,7 @@ namespace RestShape
           values && colon == std::string::npos && items.size() == 1;
         if (const auto label = names.find(key))
           entry = std::to_string(*label) + rest;
-        else if (!(key == "*" || lone_value || looks_like_labels(key)) &&
+        else if (!(key == "*" || lone_value || label_range(key)) &&
                  !names.empty())
           throw InputError("",
                            parameter,

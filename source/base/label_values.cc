@@ -66,6 +66,18 @@ namespace RestShape
       return {first, last};
     }
 
+    /// A whole number from 0 to max_label, or nothing.
+    std::optional<Label>
+    whole_label(const std::string &text)
+    {
+      constexpr std::size_t max_digits = 10;
+      if (text.empty() || text.size() > max_digits ||
+          text.find_first_not_of("0123456789") != std::string::npos ||
+          std::stol(text) > max_label)
+        return std::nullopt;
+      return Label(std::stol(text));
+    }
+
     /// The label part of a list entry ("1-90" of "1-90:1500").
     std::string
     key_of(const std::string &item)
@@ -73,6 +85,22 @@ namespace RestShape
       return dealii::Utilities::trim(item.substr(0, item.find(':')));
     }
   } // namespace
+
+  std::optional<std::pair<Label, Label>>
+  label_range(const std::string &text)
+  {
+    const std::string t = dealii::Utilities::trim(text);
+    if (const auto l = whole_label(t))
+      return std::make_pair(*l, *l);
+    const auto dash = t.find('-', 1);
+    if (dash == std::string::npos)
+      return std::nullopt;
+    const auto first = whole_label(t.substr(0, dash));
+    const auto last  = whole_label(t.substr(dash + 1));
+    if (!first || !last || *last < *first)
+      return std::nullopt;
+    return std::make_pair(*first, *last);
+  }
 
   LabelValues
   LabelValues::parse(const std::string &text, const std::string &parameter)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <map>
 
@@ -184,4 +185,35 @@ namespace RestShape
     closed.volume_mm3 = closed.n_added * h[0] * h[1] * h[2];
     return closed;
   }
+  std::pair<std::vector<int>, std::vector<std::size_t>>
+  face_connected_components(const LabelledImage     &image,
+                            const std::vector<bool> &in)
+  {
+    std::vector<int>         component(in.size(), -1);
+    std::vector<std::size_t> sizes;
+    std::deque<std::size_t>  queue;
+    for (std::size_t seed = 0; seed < in.size(); ++seed)
+      if (in[seed] && component[seed] < 0)
+        {
+          const int c     = sizes.size();
+          component[seed] = c;
+          sizes.push_back(0);
+          queue.push_back(seed);
+          while (!queue.empty())
+            {
+              const std::size_t v = queue.front();
+              queue.pop_front();
+              ++sizes[c];
+              for_neighbours(image, v, [&](const std::size_t w) {
+                if (in[w] && component[w] < 0)
+                  {
+                    component[w] = c;
+                    queue.push_back(w);
+                  }
+              });
+            }
+        }
+    return {component, sizes};
+  }
+
 } // namespace RestShape

@@ -12,33 +12,13 @@ namespace RestShape
 {
   namespace
   {
-    /// A whole number from 0 to max_label, or nothing.
-    std::optional<ImageLabel>
-    whole_label(const std::string &text)
-    {
-      if (text.empty() || text.size() > 10 ||
-          text.find_first_not_of("0123456789") != std::string::npos ||
-          std::stol(text) > max_label)
-        return std::nullopt;
-      return ImageLabel(std::stol(text));
-    }
-
     /// "7", "1-90" or an atlas name -> [first, last]; else nothing.
-    std::optional<std::pair<ImageLabel, ImageLabel>>
+    std::optional<std::pair<Label, Label>>
     atlas_range(const std::string &text, const LabelNames &atlas_names)
     {
       if (const auto named = atlas_names.find(text))
-        return std::make_pair(ImageLabel(*named), ImageLabel(*named));
-      if (const auto l = whole_label(text))
-        return std::make_pair(*l, *l);
-      const auto dash = text.find('-', 1);
-      if (dash == std::string::npos)
-        return std::nullopt;
-      const auto first = whole_label(text.substr(0, dash));
-      const auto last  = whole_label(text.substr(dash + 1));
-      if (!first || !last || *last < *first)
-        return std::nullopt;
-      return std::make_pair(*first, *last);
+        return std::make_pair(*named, *named);
+      return label_range(text);
     }
   } // namespace
 
@@ -65,7 +45,11 @@ namespace RestShape
         if (!(words >> sources))
           continue;
         words >> tissue_text >> name >> extra;
-        const auto tissue = whole_label(tissue_text);
+        const auto tissue_range = label_range(tissue_text);
+        const auto tissue =
+          tissue_range && tissue_range->first == tissue_range->second ?
+            std::optional<Label>(tissue_range->first) :
+            std::nullopt;
         if (!tissue || !extra.empty())
           throw InputError(file,
                            option,

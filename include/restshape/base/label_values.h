@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RestShape
@@ -57,6 +58,11 @@ namespace RestShape
   /// Parse "3, 5:xy, 7-9" (empty allowed).
   std::vector<FixedLabel>
   parse_fixed_labels(const std::string &text, const std::string &parameter);
+
+  /// "7" -> [7, 7], "1-90" -> [1, 90]; nothing if @p text is not a label
+  /// (a whole number from 0 to max_label) or an upward range of them.
+  std::optional<std::pair<Label, Label>>
+  label_range(const std::string &text);
 
   /// Parse "1, 2, 7-9" (empty allowed).
   std::set<Label>

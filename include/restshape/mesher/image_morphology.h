@@ -61,6 +61,35 @@ namespace RestShape
    */
   ClosedVoxels
   close_labelled_image(LabelledImage &image, const double radius);
+  /// 6-neighbours of voxel v of @p image (those inside the grid).
+  template <typename F>
+  void
+  for_neighbours(const LabelledImage &image, const std::size_t v, const F &f)
+  {
+    const std::size_t nx = image.size[0], ny = image.size[1],
+                      nz = image.size[2];
+    const std::size_t i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
+    if (i > 0)
+      f(v - 1);
+    if (i + 1 < nx)
+      f(v + 1);
+    if (j > 0)
+      f(v - nx);
+    if (j + 1 < ny)
+      f(v + nx);
+    if (k > 0)
+      f(v - nx * ny);
+    if (k + 1 < nz)
+      f(v + nx * ny);
+  }
+
+
+  /// Face-connected components (6-connectivity) of the voxels where @p in
+  /// is true: the component index of every voxel (-1 outside) and the
+  /// components' sizes.
+  std::pair<std::vector<int>, std::vector<std::size_t>>
+  face_connected_components(const LabelledImage     &image,
+                            const std::vector<bool> &in);
 } // namespace RestShape
 
 #endif
