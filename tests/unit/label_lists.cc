@@ -2,41 +2,15 @@
 // ("*:1500"), fixed labels with ranges, and the check against the mesh's
 // labels (a single label must exist, a range must hold one); the shortened
 // text of long label lists.
-#include <restshape/base/input_error.h>
 #include <restshape/base/label_values.h>
 
 #include <iostream>
 #include <string>
 
+#include "checks.h"
+
 using namespace RestShape;
-
-namespace
-{
-  int failures = 0;
-
-  void
-  expect(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-    failures += !ok;
-  }
-
-  /// The message of the InputError @p f throws, or "" if it throws none.
-  template <typename F>
-  std::string
-  error_of(const F &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.message;
-      }
-    return "";
-  }
-} // namespace
+using namespace checks;
 
 int
 main()

@@ -2,7 +2,6 @@
 // comments), the rules for a name, and label lists written with names
 // (names replaced by labels; labels, ranges, '*' and a lone value kept; an
 // unknown name an error with the nearest known one).
-#include <restshape/base/input_error.h>
 #include <restshape/base/label_names.h>
 
 #include <cstdio>
@@ -10,35 +9,13 @@
 #include <iostream>
 #include <string>
 
+#include "checks.h"
+
 using namespace RestShape;
+using namespace checks;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  expect(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-    failures += !ok;
-  }
-
-  /// The message of the InputError @p f throws, or "" if it throws none.
-  template <typename F>
-  std::string
-  error_of(const F &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.message;
-      }
-    return "";
-  }
-
   LabelNames
   table(const std::string &text)
   {

@@ -9,19 +9,10 @@
 #include <iostream>
 #include <string>
 
+#include "checks.h"
+
 using namespace RestShape;
-
-namespace
-{
-  int failures = 0;
-
-  void
-  expect(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-    failures += !ok;
-  }
-} // namespace
+using namespace checks;
 
 int
 main()
