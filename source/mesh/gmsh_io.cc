@@ -299,22 +299,30 @@ namespace RestShape
       }
     gmsh::finalize();
 
-    if (result.cells.empty())
-      throw InputError(file, file_parameter, "the mesh has no 3d cells");
-    const std::size_t n_vertices_per_cell = result.cells[0].vertices.size();
-    for (const auto &cell : result.cells)
-      if (cell.vertices.size() != n_vertices_per_cell)
+    result.names = read_gmsh_label_names(file);
+    return finish_read_mesh(std::move(result), file, file_parameter);
+  }
+
+  MeshDescription
+  finish_read_mesh(MeshDescription    mesh,
+                   const std::string &file,
+                   const std::string &parameter)
+  {
+    if (mesh.cells.empty())
+      throw InputError(file, parameter, "the mesh has no 3d cells");
+    for (const auto &cell : mesh.cells)
+      if (cell.vertices.size() != mesh.cells[0].vertices.size())
         throw InputError(file,
-                         file_parameter,
+                         parameter,
                          "the mesh mixes tetrahedra and hexahedra; expected "
                          "only one cell type");
-
     // Drop vertices that no cell uses (e.g. of boundary-only entities).
-    std::vector<unsigned int> all(result.cells.size());
+    std::vector<unsigned int> all(mesh.cells.size());
     std::iota(all.begin(), all.end(), 0u);
-    result       = select_cells(result, all);
-    result.names = read_gmsh_label_names(file);
-    return result;
+    const LabelNames names = mesh.names;
+    mesh                   = select_cells(mesh, all);
+    mesh.names             = names;
+    return mesh;
   }
 
   void

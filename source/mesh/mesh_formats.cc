@@ -56,27 +56,6 @@ namespace RestShape
       return cell;
     }
 
-    /// Drop unused vertices; one cell type only; at least one cell.
-    MeshDescription
-    finish(MeshDescription    mesh,
-           const std::string &file,
-           const std::string &parameter)
-    {
-      if (mesh.cells.empty())
-        throw InputError(file, parameter, "the mesh has no 3d cells");
-      for (const auto &cell : mesh.cells)
-        if (cell.vertices.size() != mesh.cells[0].vertices.size())
-          throw InputError(file,
-                           parameter,
-                           "the mesh mixes tetrahedra and hexahedra; "
-                           "expected only one cell type");
-      std::vector<unsigned int> all(mesh.cells.size());
-      std::iota(all.begin(), all.end(), 0u);
-      LabelNames names = mesh.names;
-      mesh             = select_cells(mesh, all);
-      mesh.names       = names;
-      return mesh;
-    }
   } // namespace
 
   // ---------------------------------------------------------------- VTK
@@ -364,7 +343,7 @@ namespace RestShape
         cell.material_id = Label(labels[i]);
         mesh.cells.push_back(cell);
       }
-    return finish(std::move(mesh), file, parameter);
+    return finish_read_mesh(std::move(mesh), file, parameter);
   }
 
   // ------------------------------------------------------------- Abaqus
@@ -586,7 +565,7 @@ namespace RestShape
       }
     for (auto &cell : mesh.cells)
       cell.material_id = label_of_set[cell.material_id];
-    return finish(std::move(mesh), file, parameter);
+    return finish_read_mesh(std::move(mesh), file, parameter);
   }
 
   // ---------------------------------------------------- by extension

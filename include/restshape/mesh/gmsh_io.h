@@ -21,6 +21,16 @@ namespace RestShape
   read_gmsh(const std::string &file, const double length_unit);
 
   /**
+   * What every mesh reader ends with: at least one cell, one cell type
+   * (InputError naming @p file and @p parameter otherwise), and the
+   * vertices no cell uses dropped (names kept).
+   */
+  MeshDescription
+  finish_read_mesh(MeshDescription    mesh,
+                   const std::string &file,
+                   const std::string &parameter);
+
+  /**
    * The names of the volume labels of a gmsh file (its $PhysicalNames of
    * dimension 3), read without reading the mesh. Names that cannot name a
    * label in a scene (LabelNames::is_valid_name(), e.g. with blanks) are
