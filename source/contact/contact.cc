@@ -1,6 +1,6 @@
 // ContactProblem: candidates, the primal-dual active set, thaws of pulling
 // nodes and the constraints for Newton (the held planes of crease nodes are
-// in contact_held_planes.cc, what it reports in contact_report.cc).
+// in held_planes.cc, what it reports in contact_report.cc).
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -168,22 +168,23 @@ namespace RestShape
     Tensor<1, 3> r;
     for (unsigned int k = 0; k < 3; ++k)
       r[k] = -raw_residual[c.node.dofs[k]];
-    if (c.held.empty())
+    const std::vector<Plane> &held = c.planes.planes();
+    if (held.empty())
       return (r * c.normal) * c.normal;
-    const unsigned int m = c.held.size();
+    const unsigned int m = held.size();
     FullMatrix<double> gram(m, m);
     Vector<double>     rhs(m), lambda(m);
     for (unsigned int i = 0; i < m; ++i)
       {
-        rhs[i] = c.held[i].normal * r;
+        rhs[i] = held[i].normal * r;
         for (unsigned int j = 0; j < m; ++j)
-          gram(i, j) = c.held[i].normal * c.held[j].normal;
+          gram(i, j) = held[i].normal * held[j].normal;
       }
     gram.gauss_jordan();
     gram.vmult(lambda, rhs);
     Tensor<1, 3> force;
     for (unsigned int i = 0; i < m; ++i)
-      force += lambda[i] * c.held[i].normal;
+      force += lambda[i] * held[i].normal;
     if (multipliers != nullptr)
       multipliers->assign(lambda.begin(), lambda.end());
     return force;
@@ -227,11 +228,8 @@ namespace RestShape
   void
   ContactProblem::drop_planes(Candidate &c, const unsigned int mask)
   {
-    for (int i = int(c.held.size()) - 1; i >= 0; --i)
-      if (mask & (1u << i))
-        c.held.erase(c.held.begin() + i);
-    if (mask != 0 && !c.held.empty())
-      set_normal_from_held(c);
+    if (c.planes.drop(mask))
+      c.normal = c.planes.normal();
   }
 
   void
@@ -255,8 +253,8 @@ namespace RestShape
         c.active   = c.active && c.eligible && g.gap < h_min;
         c.pulled   = false;
         c.grazing  = false;
-        c.face     = Plane();
         let_go(c);
+        c.planes.reset();
       }
     share_flags();
   }
@@ -264,25 +262,16 @@ namespace RestShape
   void
   ContactProblem::let_go(Candidate &c)
   {
-    c.fixed_planes  = false;
-    c.plane_changes = 0;
-    c.left.clear();
-    c.held.clear();
+    c.planes.let_go();
     c.planes_imposed = true;
   }
 
   double
   ContactProblem::constrained_gap(const Candidate &c)
   {
-    if (!(c.fixed_planes && c.active && !c.held.empty()))
+    if (!(c.planes.fixed() && c.active && !c.planes.planes().empty()))
       return c.gap;
-    if (!c.planes_imposed)
-      return c.mean_plane.gap;
-    double gap = 0;
-    for (const Plane &p : c.held)
-      if (std::abs(p.gap) > std::abs(gap))
-        gap = p.gap;
-    return gap;
+    return c.planes.constrained_gap(!c.planes_imposed);
   }
 
   ContactProblem::State
@@ -328,13 +317,14 @@ namespace RestShape
         // node follows the closest face, or holds the planes of a crease;
         // otherwise, and for inactive nodes, the smoothed normal.
         if (releases_frozen && c.active)
-          update_held_planes(c, x, g);
+          c.planes.update(
+            x, g, gap_tolerance, parameters.plane_changes, c.normal);
         else
           {
             c.normal = g.normal;
             let_go(c);
           }
-        c.face = Plane{g.gradient, x - g.gap * g.gradient, g.gap};
+        c.planes.set_closest_face(x, g);
         if (c.owned && !c.eligible &&
             (g.gap >= -gap_tolerance ||
              obstacle->n_crossings(c.previous_position, x) >= 2))
@@ -418,7 +408,7 @@ namespace RestShape
               push += std::max(0., contact_force(c, raw_residual));
               continue;
             }
-          if (c.held.size() > 1)
+          if (c.planes.planes().size() > 1)
             {
               reaction(c, raw_residual, &lambda);
               for (unsigned int k = 0; k < lambda.size(); ++k)
@@ -498,13 +488,13 @@ namespace RestShape
       if (c.active)
         {
           c.planes_imposed =
-            !c.held.empty() &&
-            add_plane_constraints(c, c.held, constraints, base);
+            !c.planes.planes().empty() &&
+            add_plane_constraints(c, c.planes.planes(), constraints, base);
           if (c.planes_imposed)
             continue;
-          const bool mean = c.fixed_planes && !c.held.empty();
+          const bool mean = c.planes.fixed() && !c.planes.planes().empty();
           add_plane_constraints(c,
-                                {mean ? c.mean_plane :
+                                {mean ? c.planes.mean_plane() :
                                         Plane{c.normal, Point<3>(), c.gap}},
                                 constraints,
                                 base);

@@ -252,7 +252,7 @@ namespace RestShape
         if (gap > gap_tolerance)
           add(result.off, gap, x);
         // The node's own multipliers: one, or one per held plane.
-        if (c.held.size() > 1)
+        if (c.planes.planes().size() > 1)
           reaction(c, raw_residual, &lambda);
         else
           lambda = {contact_force(c, raw_residual)};
@@ -284,13 +284,13 @@ namespace RestShape
         // Planes (held or fixed) that carried the node off the surface or
         // through it, past the end of their faces: it follows the surface
         // again, still active (and may hold planes again later).
-        if (!c.held.empty() && std::abs(c.gap) > gap_tolerance)
+        if (!c.planes.planes().empty() && std::abs(c.gap) > gap_tolerance)
           {
             let_go(c);
             ++changed;
             continue;
           }
-        if (c.held.size() > 1)
+        if (c.planes.planes().size() > 1)
           {
             reaction(c, raw_residual, &lambda);
             for (unsigned int k = 0; k < lambda.size(); ++k)

@@ -92,8 +92,9 @@ namespace RestShape
   unsigned int
   ContactProblem::n_held() const
   {
-    return count_owned(
-      [](const Candidate &c) { return c.active && c.held.size() > 1; });
+    return count_owned([](const Candidate &c) {
+      return c.active && c.planes.planes().size() > 1;
+    });
   }
 
   ContactProblem::Adhesion
@@ -132,7 +133,7 @@ namespace RestShape
     unsigned int n        = 0;
     double       distance = 0;
     for (const Candidate &c : candidates)
-      if (c.owned && c.active && c.fixed_planes)
+      if (c.owned && c.active && c.planes.fixed())
         {
           ++n;
           distance = std::max(distance, std::abs(c.gap));

@@ -8,6 +8,7 @@
 
 #include <restshape/base/parameters.h>
 #include <restshape/contact/contact_conditions.h>
+#include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/forward/forward_problem.h>
 
@@ -242,14 +243,7 @@ namespace RestShape
     /// allowed side, or less than @p depth (m) beyond it.
     void
     check_fixed_labels_enclosed(const double depth) const;
-    /// The plane of an obstacle face: unit normal towards the allowed side,
-    /// a point on it (m), and a node's signed distance from it (m).
-    struct Plane
-    {
-      dealii::Tensor<1, 3> normal;
-      dealii::Point<3>     point;
-      double               gap = 0;
-    };
+    using Plane = ContactPlane;
 
     struct Candidate
     {
@@ -267,21 +261,11 @@ namespace RestShape
       double               gap     = 0;
       dealii::Tensor<1, 3> normal;
       dealii::Point<3>     previous_position;
-      /// While releases are frozen: the plane of the closest face at the
-      /// last update, the faces left since (at most four), and the planes
-      /// held (see update_active_set()).
-      Plane              face;
-      std::vector<Plane> left, held;
-      unsigned int       dropped = 0; // held planes let go (bits; owner, thaw)
-      /// Held planes fixed for the rest of the solve (they kept changing):
-      /// the node's constraints are these planes, not the surface.
-      bool         fixed_planes  = false;
-      unsigned int plane_changes = 0; // changes of the held planes, frozen
-      /// For a node on fixed planes: the plane through their mean point
-      /// with their mean normal, imposed instead when the planes cannot be
-      /// (too few free components); whether they could, at the last
-      /// add_constraints().
-      Plane        mean_plane;
+      /// While releases are frozen: the planes it holds in a crease.
+      HeldPlanes   planes;
+      unsigned int dropped = 0; // held planes let go (bits; owner, thaw)
+      /// For a node on fixed planes: whether they could be imposed at the
+      /// last add_constraints() (else their mean plane was).
       mutable bool planes_imposed = true;
     };
 
@@ -315,9 +299,6 @@ namespace RestShape
     reaction(const Candidate     &c,
              const VectorType    &raw_residual,
              std::vector<double> *multipliers = nullptr) const;
-    /// Update the held planes of an active node while releases are frozen.
-    void
-    update_held_planes(Candidate &c, const dealii::Point<3> &x, const Gap &g);
     /// Forget the held planes and locks of a node (a new solve, or a node
     /// that is not active while releases are frozen).
     static void
@@ -336,9 +317,6 @@ namespace RestShape
     /// Let go of the held planes whose bits are set in @p mask.
     static void
     drop_planes(Candidate &c, const unsigned int mask);
-    /// The node's normal: the mean of its held planes' normals.
-    static void
-    set_normal_from_held(Candidate &c);
     /// Add the constraints n_i . delta = -g_i of the planes @p planes of
     /// candidate @p c; false if its free components cannot satisfy them.
     bool
