@@ -247,12 +247,17 @@ namespace
   }
 
   /// Mesh_3 and the removal of pieces that hang at vertices or edges.
+  /// The labels of @p image are freed unless @p keep_image.
   MeshDescription
-  make_mesh(const LabelledImage &image, const MesherSettings &s)
+  make_mesh(LabelledImage        &image,
+            const MesherSettings &s,
+            const bool            keep_image)
   {
     dealii::Timer   timer;
     const auto     &o    = s.options;
-    MeshDescription mesh = mesh_labelled_image(image, o);
+    MeshDescription mesh = keep_image ?
+                             mesh_labelled_image(image, o) :
+                             mesh_labelled_image(std::move(image), o);
     if (mesh.cells.empty())
       throw InputError(
         s.image_file,
@@ -279,10 +284,17 @@ namespace
     return mesh;
   }
 
+  /// The voxels of each label of the meshed image and their size (mm).
+  struct ImageVolumes
+  {
+    std::map<unsigned int, std::size_t> voxels;
+    std::array<double, 3>               spacing;
+  };
+
   /// Pinched edges, narrow gaps, cells and volume per label, quality.
   void
   report_mesh(const MeshDescription &mesh,
-              const LabelledImage   &image,
+              const ImageVolumes    &image,
               const MesherSettings  &s)
   {
     const unsigned int n_pinched = n_pinched_boundary_edges(mesh);
@@ -305,11 +317,11 @@ namespace
                 << std::endl;
 
     const MeshQuality                    q = mesh_quality(mesh);
-    const auto                           h = image.spacing();
+    const auto                           h = image.spacing;
     std::map<unsigned int, unsigned int> n_per_label;
     for (const auto &cell : mesh.cells)
       ++n_per_label[cell.material_id];
-    for (const auto &[label, count] : image.label_counts())
+    for (const auto &[label, count] : image.voxels)
       {
         const auto volume = q.volume_per_label.find(label);
         std::cout << "  " << label_text(label, mesh.names) << ": "
@@ -457,11 +469,16 @@ main(int argc, char **argv)
       LabelledImage closed;
       if (s.close_sulci > 0)
         closed = close_sulci(image, s);
-      const LabelledImage &meshed_image = s.close_sulci > 0 ? closed : image;
-      MeshDescription      mesh         = make_mesh(meshed_image, s);
+      // The image as read makes the skull; the closed one is not needed
+      // after meshing.
+      LabelledImage     &meshed_image = s.close_sulci > 0 ? closed : image;
+      const ImageVolumes volumes{meshed_image.label_counts(),
+                                 meshed_image.spacing()};
+      MeshDescription    mesh =
+        make_mesh(meshed_image, s, s.close_sulci == 0 && !s.skull_out.empty());
       for (const auto &[label, name] : names.by_label())
         mesh.names.add(label, name, s.out, "--out");
-      report_mesh(mesh, meshed_image, s);
+      report_mesh(mesh, volumes, s);
 
       MeshDescription in_metres = mesh;
       for (auto &p : in_metres.vertices)

@@ -82,59 +82,77 @@ namespace RestShape
     }
   } // namespace
 
+  namespace
+  {
+    /// Mesh_3 on the labels as CGAL has them; vertices mapped by @p to_world.
+    MeshDescription
+    mesh_cgal_image(const CGAL::Image_3    &cgal_image,
+                    const ToWorld          &to_world,
+                    const ImageMeshOptions &options)
+    {
+      const Domain domain = Domain::create_labeled_image_mesh_domain(
+        cgal_image, params::relative_error_bound = 1e-6);
+      const Criteria criteria(params::facet_angle    = options.facet_angle,
+                              params::facet_size     = options.facet_size,
+                              params::facet_distance = options.facet_distance,
+                              params::cell_radius_edge_ratio =
+                                options.radius_edge,
+                              params::cell_size = options.cell_size);
+      seed_cgal(options.seed);
+      const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
+        domain,
+        criteria,
+        params::perturb(params::sliver_bound = options.sliver_bound,
+                        params::time_limit   = 0),
+        params::exude(params::sliver_bound = options.sliver_bound,
+                      params::time_limit   = 0));
+
+      MeshDescription                           mesh;
+      std::map<Tr::Vertex_handle, unsigned int> index;
+      const bool                                mirrors = to_world.mirrors();
+      for (auto c = c3t3.cells_in_complex_begin();
+           c != c3t3.cells_in_complex_end();
+           ++c)
+        {
+          dealii::CellData<3> cell(4);
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const auto vh       = c->vertex(v);
+              const auto inserted = index.emplace(vh, mesh.vertices.size());
+              if (inserted.second)
+                {
+                  const auto p = vh->point();
+                  mesh.vertices.push_back(to_world(CGAL::to_double(p.x()),
+                                                   CGAL::to_double(p.y()),
+                                                   CGAL::to_double(p.z())));
+                }
+              cell.vertices[v] = inserted.first->second;
+            }
+          if (mirrors)
+            std::swap(cell.vertices[0], cell.vertices[1]);
+          cell.material_id = c3t3.subdomain_index(c);
+          mesh.cells.push_back(cell);
+        }
+      return mesh;
+    }
+  } // namespace
+
   MeshDescription
   mesh_labelled_image(const LabelledImage    &image,
                       const ImageMeshOptions &options)
   {
-    const ToWorld to_world(image);
-    const auto   &h = to_world.h;
+    const ToWorld       to_world(image);
+    const CGAL::Image_3 cgal_image(cgal_labels(image, to_world.h));
+    return mesh_cgal_image(cgal_image, to_world, options);
+  }
 
-    const CGAL::Image_3 cgal_image(cgal_labels(image, h));
-
-    const Domain domain = Domain::create_labeled_image_mesh_domain(
-      cgal_image, params::relative_error_bound = 1e-6);
-    const Criteria criteria(params::facet_angle    = options.facet_angle,
-                            params::facet_size     = options.facet_size,
-                            params::facet_distance = options.facet_distance,
-                            params::cell_radius_edge_ratio =
-                              options.radius_edge,
-                            params::cell_size = options.cell_size);
-    seed_cgal(options.seed);
-    const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(
-      domain,
-      criteria,
-      params::perturb(params::sliver_bound = options.sliver_bound,
-                      params::time_limit   = 0),
-      params::exude(params::sliver_bound = options.sliver_bound,
-                    params::time_limit   = 0));
-
-    MeshDescription                           mesh;
-    std::map<Tr::Vertex_handle, unsigned int> index;
-    const bool                                mirrors = to_world.mirrors();
-    for (auto c = c3t3.cells_in_complex_begin();
-         c != c3t3.cells_in_complex_end();
-         ++c)
-      {
-        dealii::CellData<3> cell(4);
-        for (unsigned int v = 0; v < 4; ++v)
-          {
-            const auto vh       = c->vertex(v);
-            const auto inserted = index.emplace(vh, mesh.vertices.size());
-            if (inserted.second)
-              {
-                const auto p = vh->point();
-                mesh.vertices.push_back(to_world(CGAL::to_double(p.x()),
-                                                 CGAL::to_double(p.y()),
-                                                 CGAL::to_double(p.z())));
-              }
-            cell.vertices[v] = inserted.first->second;
-          }
-        if (mirrors)
-          std::swap(cell.vertices[0], cell.vertices[1]);
-        cell.material_id = c3t3.subdomain_index(c);
-        mesh.cells.push_back(cell);
-      }
-    return mesh;
+  MeshDescription
+  mesh_labelled_image(LabelledImage &&image, const ImageMeshOptions &options)
+  {
+    const ToWorld       to_world(image);
+    const CGAL::Image_3 cgal_image(cgal_labels(image, to_world.h));
+    std::vector<ImageLabel>().swap(image.labels);
+    return mesh_cgal_image(cgal_image, to_world, options);
   }
 
   MeshQuality

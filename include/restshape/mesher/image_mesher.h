@@ -36,6 +36,14 @@ namespace RestShape
   mesh_labelled_image(const LabelledImage    &image,
                       const ImageMeshOptions &options);
 
+  /**
+   * The same for an image the caller no longer needs: its labels are freed
+   * once CGAL has its own copy (in the smallest word that holds them),
+   * which lowers the mesher's peak memory by 4 bytes per voxel.
+   */
+  MeshDescription
+  mesh_labelled_image(LabelledImage &&image, const ImageMeshOptions &options);
+
   struct MeshQuality
   {
     double       min_dihedral_deg = 180;
