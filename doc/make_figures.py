@@ -9,8 +9,17 @@
 # lateral view from the left), doc/figures/brain_error.png (the error
 # |X_target - X_equilibrium| on the equilibrium surface, from the left and
 # from below) and doc/figures/brain_iterations.png (mean and max error per
-# inverse iteration for both methods).
+# inverse iteration for both methods). With the argument `tracts`, only
+# doc/figures/brain_tracts.png, from the outputs of prm/brain_tracts.prm
+# and of the same scene with uniform stiffness:
+#
+#   build/restshape prm/brain_tracts.prm
+#   build/restshape prm/brain_tracts.prm \
+#     --set "Materials/Young's modulus=tumour:10000, *:1500" \
+#     --set Output/Directory=output/brain_tracts_uniform
+#   xvfb-run -a python3 doc/make_figures.py tracts
 import csv
+import sys
 import glob
 import os
 
@@ -95,16 +104,17 @@ def actor(poly, scalars=None, lut=None):
 
 
 def render_panels(panels, file, direction=(1, 0, 0), view_up=(0, 0, 1), size=(1500, 520)):
-    """panels: (title, polydata, scalars or None, maximum); one viewport each,
+    """panels: (title, polydata, scalars or None, maximum[, bar title, default
+    mm]); one viewport each,
     lateral view from the left (camera at -x), superior up."""
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(*size)
-    for i, (title, poly, scalars, maximum) in enumerate(panels):
+    for i, (title, poly, scalars, maximum, *unit) in enumerate(panels):
         renderer = vtk.vtkRenderer()
         renderer.SetViewport(i / len(panels), 0, (i + 1) / len(panels), 1)
         renderer.SetBackground(1, 1, 1)
-        lut, bar = colour_map(maximum, 'mm') if scalars else (None, None)
+        lut, bar = colour_map(maximum, (unit or ['mm'])[0]) if scalars else (None, None)
         renderer.AddActor(actor(poly, scalars, lut))
         if bar is not None:
             renderer.AddActor2D(bar)
@@ -165,7 +175,61 @@ def read_iterations(directory):
             [float(r['max_error_mm']) for r in rows])
 
 
+def cut(grid, positions, y, name, values):
+    """The section y = const (mm) of grid, its points at the point field
+    `positions`, with the point field `values` as `name`."""
+    copy = vtk.vtkUnstructuredGrid()
+    copy.DeepCopy(grid)
+    points = vtk.vtkPoints()
+    points.SetData(numpy_to_vtk(vtk_to_numpy(grid.GetPointData().GetArray(positions)).copy(), deep=1))
+    copy.SetPoints(points)
+    array = numpy_to_vtk(numpy.asarray(values, dtype=float).copy(), deep=1)
+    array.SetName(name)
+    copy.GetPointData().AddArray(array)
+    plane = vtk.vtkPlane()
+    plane.SetOrigin(0, y, 0)
+    plane.SetNormal(0, 1, 0)
+    cutter = vtk.vtkCutter()
+    cutter.SetCutFunction(plane)
+    cutter.SetInputData(copy)
+    cutter.Update()
+    return cutter.GetOutput()
+
+
+def tracts(heterogeneous, uniform):
+    """Labels on a coronal section, the rest-shape correction, and where the
+    softer tracts move the rest shape (both runs on the same mesh)."""
+    a = read_vtu(vtus(heterogeneous)[-1])
+    b = read_vtu(vtus(uniform)[-1])
+    rest_a = vtk_to_numpy(a.GetPointData().GetArray('rest_position_mm'))
+    rest_b = vtk_to_numpy(b.GetPointData().GetArray('rest_position_mm'))
+    shift = numpy.linalg.norm(rest_a - rest_b, axis=1)
+    correction = magnitude(a, 'rest_position_mm', 'target_position_mm')
+    label = vtk_to_numpy(a.GetPointData().GetArray('label'))
+    section = 2.0  # mm: through the body of the corpus callosum
+    front = dict(direction=(0, -1, 0), view_up=(0, 0, 1))
+    render_panels([('labels, coronal section y = %g mm (tracts: 5)' % section,
+                    cut(a, 'target_position_mm', section, 'l', label), 'l', label.max(), 'label'),
+                   ('rest shape: |X_rest - X_target|, max %.2f mm' % correction.max(),
+                    surface_at(a, 'rest_position_mm', 'c', correction), 'c', correction.max()),
+                   ('softer tracts move it by up to %.2f mm' % shift.max(),
+                    cut(a, 'target_position_mm', section, 's', shift), 's', shift.max())],
+                  'doc/figures/brain_tracts.png', **front)
+    unique = numpy.unique(vtk_to_numpy(a.GetPointData().GetArray('target_position_mm')),
+                          axis=0, return_index=True)[1]
+    print('rest shapes, tracts at half stiffness vs uniform: mean %.4f, max %.4f mm'
+          % (shift[unique].mean(), shift.max()))
+    print('rest-shape correction: mean %.4f / %.4f mm, max %.4f / %.4f mm' % (
+        correction[unique].mean(),
+        magnitude(b, 'rest_position_mm', 'target_position_mm')[unique].mean(),
+        correction.max(), magnitude(b, 'rest_position_mm', 'target_position_mm').max()))
+    print('wrote doc/figures/brain_tracts.png')
+
+
 os.makedirs('doc/figures', exist_ok=True)
+if sys.argv[1:] == ['tracts']:
+    tracts('output/brain_tracts', 'output/brain_tracts_uniform')
+    raise SystemExit(0)
 shapes('output/brain')
 errors('output/brain', 'output/brain_paper_method')
 plt.figure(figsize=(6.5, 4))

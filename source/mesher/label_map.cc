@@ -25,7 +25,8 @@ namespace RestShape
   LabelMap
   LabelMap::read(const std::string &file,
                  const std::string &option,
-                 const LabelNames  &atlas_names)
+                 const LabelNames  &atlas_names,
+                 const std::string &names_option)
   {
     std::ifstream in(file);
     if (!in)
@@ -85,9 +86,8 @@ namespace RestShape
                 at + "'" + source +
                   "' is not an atlas label; expected a label, a range "
                   "such as '1-90'" +
-                  (atlas_names.empty() ? std::string(" (names need "
-                                                     "--label-names)") :
-                                         " or a name of --label-names"));
+                  (atlas_names.empty() ? " (names need " + names_option + ")" :
+                                         " or a name of " + names_option));
             map.ranges.push_back(
               {range->first, range->second, *tissue, line_number});
           }

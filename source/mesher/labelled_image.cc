@@ -36,6 +36,23 @@ namespace RestShape
     ijk[2] = k;
     return dealii::Point<3>(index_to_mm * ijk + offset);
   }
+  ImageLabel
+  LabelledImage::label_at(const dealii::Point<3> &x) const
+  {
+    dealii::Tensor<1, 3> relative = x;
+    relative -= offset;
+    const dealii::Tensor<1, 3>  ijk = dealii::invert(index_to_mm) * relative;
+    std::array<unsigned int, 3> n;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        const double rounded = std::round(ijk[d]);
+        if (!(rounded >= 0 && rounded < size[d]))
+          return 0;
+        n[d] = static_cast<unsigned int>(rounded);
+      }
+    return labels[index(n[0], n[1], n[2])];
+  }
+
 
   std::map<unsigned int, std::size_t>
   LabelledImage::label_counts() const

@@ -28,11 +28,13 @@ namespace RestShape
   class LabelMap
   {
   public:
-    /// Read @p file; errors name it, @p option and the line.
+    /// Read @p file; errors name it, @p option and the line, and
+    /// @p names_option as where the atlas names come from.
     static LabelMap
     read(const std::string &file,
          const std::string &option,
-         const LabelNames  &atlas_names);
+         const LabelNames  &atlas_names,
+         const std::string &names_option = "--label-names");
 
     /// The tissue label of @p atlas_label, if listed.
     std::optional<ImageLabel>

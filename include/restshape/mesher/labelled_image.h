@@ -63,6 +63,11 @@ namespace RestShape
     dealii::Point<3>
     position(const double i, const double j, const double k) const;
 
+    /// The label of the voxel whose centre is nearest to @p x (mm, world
+    /// coordinates); 0 outside the grid.
+    ImageLabel
+    label_at(const dealii::Point<3> &x) const;
+
     /// Number of voxels of every non-zero label.
     std::map<unsigned int, std::size_t>
     label_counts() const;
