@@ -92,6 +92,165 @@ namespace
             parse_number(option, f[2]),
             Label(label)};
   }
+  /// Options of the box.
+  struct BoxSettings
+  {
+    std::array<double, 3>       size, origin;
+    std::array<unsigned int, 3> n{{1, 1, 1}};
+    std::string                 cell_type;
+    Label                       label = 1;
+    std::vector<Slab>           slabs;
+  };
+
+  BoxSettings
+  read_box(const ToolOptions &cl)
+  {
+    BoxSettings b;
+    b.size                  = cl.triple("--size", {{1, 1, 1}});
+    b.origin                = cl.triple("--origin", {{0, 0, 0}});
+    const auto subdivisions = cl.triple("--subdivisions", {{1, 1, 1}});
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        b.n[d] = static_cast<unsigned int>(subdivisions[d]);
+        if (subdivisions[d] < 1 || b.n[d] != subdivisions[d])
+          throw InputError("",
+                           "--subdivisions",
+                           "expected three whole numbers >= 1, got '" +
+                             cl.text("--subdivisions") + "'");
+      }
+    b.cell_type = cl.choice("--cell-type",
+                            "tetrahedra",
+                            {"tetrahedra", "tetrahedra24", "hexahedra"});
+    b.label     = cl.integer("--label", 1, 0, max_label);
+    for (const std::string &slab : cl.all("--slab"))
+      b.slabs.push_back(parse_slab(slab));
+    return b;
+  }
+
+  /// Write @p tria as gmsh and say what was written.
+  void
+  write_triangulation(const Triangulation<3> &tria,
+                      const std::string      &out,
+                      const std::string      &cells)
+  {
+    write_gmsh(
+      tria, [&](unsigned int v) { return tria.get_vertices()[v]; }, 1.0, out);
+    std::cout << out << ": " << tria.n_active_cells() << " " << cells << ", "
+              << tria.n_used_vertices() << " vertices" << std::endl;
+  }
+
+  void
+  write_hemisphere(const ToolOptions &cl, const std::string &out)
+  {
+    const double       radius      = cl.non_negative("--hemisphere", 0);
+    const unsigned int refinements = cl.integer("--refinements", 0, 0, 8);
+    const double       grading     = cl.positive("--grading", 1);
+    const std::string  cell_type =
+      cl.choice("--cell-type",
+                "tetrahedra",
+                {"tetrahedra", "tetrahedra24", "hexahedra"});
+    Triangulation<3> hexes, tria;
+    make_hemisphere(hexes, radius, refinements, grading);
+    if (cell_type != "hexahedra")
+      GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+    else
+      tria.copy_triangulation(hexes);
+    write_triangulation(tria, out, "cells");
+  }
+
+  /// The six tetrahedra of the Freudenthal split of hexahedron @p hex
+  /// (vertices in deal.II's lexicographic order): one per path 0 -> 7
+  /// along the axes, positively oriented.
+  void
+  add_freudenthal_tetrahedra(const std::array<unsigned int, 8> &hex,
+                             const Label                        label,
+                             MeshDescription                   &mesh)
+  {
+    std::array<unsigned int, 3> axes{{0, 1, 2}};
+    do
+      {
+        CellData<3>  cell(4);
+        unsigned int corner = 0;
+        cell.vertices[0]    = hex[0];
+        for (unsigned int s = 0; s < 3; ++s)
+          {
+            corner |= 1u << axes[s];
+            cell.vertices[s + 1] = hex[corner];
+          }
+        const auto &v = mesh.vertices;
+        const auto &c = cell.vertices;
+        if (cross_product_3d(v[c[1]] - v[c[0]], v[c[2]] - v[c[0]]) *
+              (v[c[3]] - v[c[0]]) <
+            0)
+          std::swap(cell.vertices[1], cell.vertices[2]);
+        cell.material_id = label;
+        mesh.cells.push_back(cell);
+      }
+    while (std::next_permutation(axes.begin(), axes.end()));
+  }
+
+  /// The box as hexahedra, or (cell type tetrahedra) six tetrahedra each;
+  /// labels from --label and the slabs at each hexahedron's centre.
+  MeshDescription
+  box_mesh(const BoxSettings &b)
+  {
+    const auto     &n = b.n;
+    MeshDescription mesh;
+    const auto      vertex_index =
+      [&](unsigned int i, unsigned int j, unsigned int k) {
+        return (k * (n[1] + 1) + j) * (n[0] + 1) + i;
+      };
+    for (unsigned int k = 0; k <= n[2]; ++k)
+      for (unsigned int j = 0; j <= n[1]; ++j)
+        for (unsigned int i = 0; i <= n[0]; ++i)
+          mesh.vertices.emplace_back(b.origin[0] + b.size[0] * i / n[0],
+                                     b.origin[1] + b.size[1] * j / n[1],
+                                     b.origin[2] + b.size[2] * k / n[2]);
+    for (unsigned int k = 0; k < n[2]; ++k)
+      for (unsigned int j = 0; j < n[1]; ++j)
+        for (unsigned int i = 0; i < n[0]; ++i)
+          {
+            std::array<unsigned int, 8> hex;
+            for (unsigned int v = 0; v < 8; ++v)
+              hex[v] = vertex_index(i + (v & 1),
+                                    j + ((v >> 1) & 1),
+                                    k + ((v >> 2) & 1));
+            Point<3> centre;
+            for (const unsigned int v : hex)
+              centre += mesh.vertices[v] / 8.;
+            Label label = b.label;
+            for (const Slab &s : b.slabs)
+              if (centre[s.axis] >= s.min && centre[s.axis] <= s.max)
+                label = s.label;
+            if (b.cell_type == "tetrahedra")
+              {
+                add_freudenthal_tetrahedra(hex, label, mesh);
+                continue;
+              }
+            CellData<3> cell(8);
+            cell.vertices.assign(hex.begin(), hex.end());
+            cell.material_id = label;
+            mesh.cells.push_back(cell);
+          }
+    return mesh;
+  }
+
+  void
+  write_box(const BoxSettings &b, const std::string &out)
+  {
+    const MeshDescription mesh = box_mesh(b);
+    if (b.cell_type == "tetrahedra24")
+      {
+        Triangulation<3> hexes, tria;
+        hexes.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
+        GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
+        write_triangulation(tria, out, "tetrahedra");
+        return;
+      }
+    write_gmsh(mesh, 1.0, out);
+    std::cout << out << ": " << mesh.cells.size() << " " << b.cell_type << ", "
+              << mesh.vertices.size() << " vertices" << std::endl;
+  }
 } // namespace
 
 int
@@ -117,138 +276,17 @@ main(int argc, char **argv)
           std::cout << usage;
           return 0;
         }
-      const std::array<double, 3> size   = cl.triple("--size", {{1, 1, 1}});
-      const std::array<double, 3> origin = cl.triple("--origin", {{0, 0, 0}});
-      std::array<unsigned int, 3> n{{1, 1, 1}};
-      const auto subdivisions = cl.triple("--subdivisions", {{1, 1, 1}});
-      for (unsigned int d = 0; d < 3; ++d)
-        {
-          n[d] = static_cast<unsigned int>(subdivisions[d]);
-          if (subdivisions[d] < 1 || n[d] != subdivisions[d])
-            throw InputError("",
-                             "--subdivisions",
-                             "expected three whole numbers >= 1, got '" +
-                               cl.text("--subdivisions") + "'");
-        }
-      const std::string cell_type =
-        cl.choice("--cell-type",
-                  "tetrahedra",
-                  {"tetrahedra", "tetrahedra24", "hexahedra"});
-      const bool        tets   = cell_type == "tetrahedra";
-      const bool        tets24 = cell_type == "tetrahedra24";
-      const Label       label  = cl.integer("--label", 1, 0, max_label);
-      std::vector<Slab> slabs;
-      for (const std::string &slab : cl.all("--slab"))
-        slabs.push_back(parse_slab(slab));
       const std::string out =
         cl.required("--out", "the output mesh's file name (.msh)");
-      const double       hemisphere  = cl.non_negative("--hemisphere", 0);
-      const unsigned int refinements = cl.integer("--refinements", 0, 0, 8);
-      const double       grading     = cl.positive("--grading", 1);
-
-      if (hemisphere > 0)
-        {
-          Triangulation<3> hexes, tria;
-          make_hemisphere(hexes, hemisphere, refinements, grading);
-          if (tets || tets24)
-            GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
-          else
-            tria.copy_triangulation(hexes);
-          write_gmsh(
-            tria,
-            [&](unsigned int v) { return tria.get_vertices()[v]; },
-            1.0,
-            out);
-          std::cout << out << ": " << tria.n_active_cells() << " cells, "
-                    << tria.n_used_vertices() << " vertices" << std::endl;
-          return 0;
-        }
-
-      MeshDescription mesh;
-      const auto      vertex_index =
-        [&](unsigned int i, unsigned int j, unsigned int k) {
-          return (k * (n[1] + 1) + j) * (n[0] + 1) + i;
-        };
-      for (unsigned int k = 0; k <= n[2]; ++k)
-        for (unsigned int j = 0; j <= n[1]; ++j)
-          for (unsigned int i = 0; i <= n[0]; ++i)
-            mesh.vertices.emplace_back(origin[0] + size[0] * i / n[0],
-                                       origin[1] + size[1] * j / n[1],
-                                       origin[2] + size[2] * k / n[2]);
-      for (unsigned int k = 0; k < n[2]; ++k)
-        for (unsigned int j = 0; j < n[1]; ++j)
-          for (unsigned int i = 0; i < n[0]; ++i)
-            {
-              // Hexahedron vertices in deal.II's lexicographic order.
-              std::array<unsigned int, 8> hex;
-              for (unsigned int v = 0; v < 8; ++v)
-                hex[v] = vertex_index(i + (v & 1),
-                                      j + ((v >> 1) & 1),
-                                      k + ((v >> 2) & 1));
-              Point<3> centre;
-              for (const unsigned int v : hex)
-                centre += mesh.vertices[v] / 8.;
-              Label cell_label = label;
-              for (const Slab &s : slabs)
-                if (centre[s.axis] >= s.min && centre[s.axis] <= s.max)
-                  cell_label = s.label;
-
-              if (!tets || tets24)
-                {
-                  CellData<3> cell(8);
-                  cell.vertices.assign(hex.begin(), hex.end());
-                  cell.material_id = cell_label;
-                  mesh.cells.push_back(cell);
-                  continue;
-                }
-              // Freudenthal: one tetrahedron per path 0 -> 7 along the axes.
-              std::array<unsigned int, 3> axes{{0, 1, 2}};
-              do
-                {
-                  CellData<3>  cell(4);
-                  unsigned int corner = 0;
-                  cell.vertices[0]    = hex[0];
-                  for (unsigned int s = 0; s < 3; ++s)
-                    {
-                      corner |= 1u << axes[s];
-                      cell.vertices[s + 1] = hex[corner];
-                    }
-                  const auto &v = mesh.vertices;
-                  const auto &c = cell.vertices;
-                  if (cross_product_3d(v[c[1]] - v[c[0]], v[c[2]] - v[c[0]]) *
-                        (v[c[3]] - v[c[0]]) <
-                      0)
-                    std::swap(cell.vertices[1], cell.vertices[2]);
-                  cell.material_id = cell_label;
-                  mesh.cells.push_back(cell);
-                }
-              while (std::next_permutation(axes.begin(), axes.end()));
-            }
-
-      std::size_t n_cells    = mesh.cells.size(),
-                  n_vertices = mesh.vertices.size();
-      if (tets24)
-        {
-          Triangulation<3> hexes, tria;
-          hexes.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
-          GridGenerator::convert_hypercube_to_simplex_mesh(hexes, tria);
-          write_gmsh(
-            tria,
-            [&](unsigned int v) { return tria.get_vertices()[v]; },
-            1.0,
-            out);
-          n_cells    = tria.n_active_cells();
-          n_vertices = tria.n_used_vertices();
-        }
+      if (cl.non_negative("--hemisphere", 0) > 0)
+        write_hemisphere(cl, out);
       else
-        write_gmsh(mesh, 1.0, out);
-      std::cout << out << ": " << n_cells
-                << (tets || tets24 ? " tetrahedra, " : " hexahedra, ")
-                << n_vertices << " vertices" << std::endl;
+        write_box(read_box(cl), out);
     }
   catch (const std::exception &exc)
     {
-      std::cerr << "restshape-gridgen: error: " << exc.what() << std::endl;
+      std::cerr << "restshape-gridgen: error: " << one_line_message(exc)
+                << std::endl;
       return 1;
     }
   return 0;
