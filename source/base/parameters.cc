@@ -60,8 +60,9 @@ namespace RestShape
                       Patterns::FileName(),
                       "Mesh file: gmsh (.msh, any version; physical volume "
                       "tags are the labels, $PhysicalNames their names), "
-                      "VTK legacy ASCII unstructured grid (.vtk; labels "
-                      "from the cell-data array label or MaterialID) or "
+                      "VTK legacy ASCII unstructured grid (.vtk) or VTK XML "
+                      "unstructured grid (.vtu; labels from the cell-data "
+                      "array label or MaterialID) or "
                       "Abaqus (.inp; C3D4/C3D8 elements, element sets "
                       "numbered 1, 2, ... in order are the labels, their "
                       "names the names). Linear tetrahedra or hexahedra. "

@@ -5,6 +5,7 @@
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_formats.h>
 #include <restshape/mesh/mesh_transforms.h>
+#include <restshape/mesh/vtk_grid.h>
 
 #include <algorithm>
 #include <cctype>
@@ -25,6 +26,8 @@ namespace RestShape
     /// gmsh, VTK and Abaqus number hexahedron vertices counter-clockwise
     /// per face; deal.II lexicographically.
     constexpr unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+
+    const std::string legacy_format = "a VTK legacy ASCII unstructured grid";
 
     std::string
     lower(std::string text)
@@ -113,8 +116,7 @@ namespace RestShape
       {
         throw InputError(file,
                          parameter,
-                         message +
-                           "; expected a VTK legacy ASCII unstructured grid");
+                         message + "; expected " + legacy_format);
       }
 
       void
@@ -156,40 +158,11 @@ namespace RestShape
     }
 
     /// The label array's name among the cell arrays, by preference.
-    std::string
-    label_array(const std::map<std::string, std::vector<long>> &arrays,
-                VtkWords                                       &words)
-    {
-      for (const std::string name : {"label",
-                                     "labels",
-                                     "MaterialID",
-                                     "material_id",
-                                     "gmsh:physical",
-                                     "CellEntityIds",
-                                     "region"})
-        if (arrays.count(name))
-          return name;
-      if (arrays.size() == 1)
-        return arrays.begin()->first;
-      std::string names;
-      for (const auto &[name, values] : arrays)
-        names += (names.empty() ? "" : ", ") + name;
-      words.fail("no cell-data label array (found: " +
-                 (names.empty() ? std::string("none") : names) +
-                 "); expected an integer array named label or MaterialID");
-    }
   } // namespace
 
   namespace
   {
-    /// The sections of a VTK file that make the mesh.
-    struct VtkContent
-    {
-      std::vector<Point<3>>                    points;
-      std::vector<std::vector<long>>           cells;
-      std::vector<long>                        types;
-      std::map<std::string, std::vector<long>> arrays; // cell data
-    };
+    using VtkContent = VtkGrid;
 
     /// CELLS: "n size", then "k v0 ... v(k-1)" per cell, or (file version
     /// 5.1) OFFSETS and CONNECTIVITY arrays.
@@ -292,6 +265,30 @@ namespace RestShape
     }
   } // namespace
 
+  std::string
+  vtk_label_array(const std::map<std::string, std::vector<long>> &arrays,
+                  const std::function<void(const std::string &)> &fail)
+  {
+    for (const std::string name : {"label",
+                                   "labels",
+                                   "MaterialID",
+                                   "material_id",
+                                   "gmsh:physical",
+                                   "CellEntityIds",
+                                   "region"})
+      if (arrays.count(name))
+        return name;
+    if (arrays.size() == 1)
+      return arrays.begin()->first;
+    std::string names;
+    for (const auto &[name, values] : arrays)
+      names += (names.empty() ? "" : ", ") + name;
+    fail("no cell-data label array (found: " +
+         (names.empty() ? std::string("none") : names) +
+         "); expected an integer array named label or MaterialID");
+    return "";
+  }
+
   MeshDescription
   read_vtk_mesh(const std::string &file,
                 const double       length_unit,
@@ -310,35 +307,49 @@ namespace RestShape
         words.word("the dataset type") != "UNSTRUCTURED_GRID")
       words.fail("not an unstructured grid");
 
-    VtkContent               c      = read_vtk_content(words, length_unit);
-    const std::vector<long> &labels = c.arrays[label_array(c.arrays, words)];
-    MeshDescription          mesh;
-    mesh.vertices = c.points;
-    for (unsigned int i = 0; i < c.cells.size(); ++i)
+    return vtk_grid_to_mesh(read_vtk_content(words, length_unit),
+                            file,
+                            parameter,
+                            legacy_format);
+  }
+
+  MeshDescription
+  vtk_grid_to_mesh(const VtkGrid     &grid,
+                   const std::string &file,
+                   const std::string &parameter,
+                   const std::string &format)
+  {
+    const auto fail = [&](const std::string &message) {
+      throw InputError(file, parameter, message + "; expected " + format);
+    };
+    const std::vector<long> &labels =
+      grid.arrays.at(vtk_label_array(grid.arrays, fail));
+    MeshDescription mesh;
+    mesh.vertices = grid.points;
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
       {
         const std::string cell_text = "cell " + std::to_string(i);
-        if (c.types[i] != 10 && c.types[i] != 12)
+        const long        type      = grid.types[i];
+        if (type != 10 && type != 12)
           {
-            if (c.types[i] >= 10)
-              words.fail(cell_text + " has VTK type " +
-                         std::to_string(c.types[i]) +
-                         "; expected linear tetrahedra (10) or hexahedra "
-                         "(12)");
+            if (type >= 10)
+              fail(cell_text + " has VTK type " + std::to_string(type) +
+                   "; expected linear tetrahedra (10) or hexahedra (12)");
             continue; // vertices, lines, faces
           }
         std::vector<unsigned int> v;
-        for (const long p : c.cells[i])
+        for (const long p : grid.cells[i])
           {
             if (p < 0 || p >= long(mesh.vertices.size()))
-              words.fail(cell_text + " refers to a point that does not exist");
+              fail(cell_text + " refers to a point that does not exist");
             v.push_back(p);
           }
-        if (v.size() != (c.types[i] == 10 ? 4u : 8u))
-          words.fail(cell_text + " has " + std::to_string(v.size()) +
-                     " points for its type");
+        if (v.size() != (type == 10 ? 4u : 8u))
+          fail(cell_text + " has " + std::to_string(v.size()) +
+               " points for its type");
         if (labels[i] < 0 || labels[i] > max_label)
-          words.fail(cell_text + " has label " + std::to_string(labels[i]) +
-                     ", outside 0.." + std::to_string(max_label));
+          fail(cell_text + " has label " + std::to_string(labels[i]) +
+               ", outside 0.." + std::to_string(max_label));
         CellData<3> cell = make_cell(v);
         cell.material_id = Label(labels[i]);
         mesh.cells.push_back(cell);
@@ -586,27 +597,31 @@ namespace RestShape
   {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec))
-      throw InputError(file,
-                       parameter,
-                       "no such file; expected a mesh (.msh, .vtk or .inp)");
+      throw InputError(
+        file,
+        parameter,
+        "no such file; expected a mesh (.msh, .vtk, .vtu or .inp)");
     if (!std::filesystem::is_regular_file(file, ec) ||
         !std::ifstream(file).good())
       throw InputError(file,
                        parameter,
-                       "not a readable file; expected a mesh (.msh, .vtk or "
-                       ".inp)");
+                       "not a readable file; expected a mesh (.msh, .vtk, "
+                       ".vtu or .inp)");
     const std::string ext = extension(file);
     if (ext == ".msh")
       return read_gmsh(file, length_unit);
     if (ext == ".vtk")
       return read_vtk_mesh(file, length_unit, parameter);
+    if (ext == ".vtu")
+      return read_vtu_mesh(file, length_unit, parameter);
     if (ext == ".inp")
       return read_abaqus_mesh(file, length_unit, parameter);
     throw InputError(file,
                      parameter,
                      "unknown mesh format '" + ext +
                        "'; expected .msh (gmsh), .vtk (VTK legacy ASCII "
-                       "unstructured grid) or .inp (Abaqus)");
+                       "unstructured grid), .vtu (VTK XML unstructured grid) "
+                       "or .inp (Abaqus)");
   }
 
   LabelNames

@@ -1,6 +1,6 @@
-// Reading the mesh formats other codes write: VTK legacy unstructured grids
-// and Abaqus input files, beside gmsh (gmsh_io.h); read_mesh() picks the
-// reader by the file's extension.
+// Reading the mesh formats other codes write: VTK legacy and XML
+// unstructured grids and Abaqus input files, beside gmsh (gmsh_io.h);
+// read_mesh() picks the reader by the file's extension.
 #ifndef restshape_mesh_mesh_formats_h
 #define restshape_mesh_mesh_formats_h
 
@@ -25,6 +25,18 @@ namespace RestShape
                 const std::string &parameter);
 
   /**
+   * Read a VTK XML unstructured grid (.vtu; one piece, little endian;
+   * data arrays in ASCII, inline base64 or appended raw/base64 data,
+   * uncompressed or zlib-compressed, 32- or 64-bit headers) into a
+   * description in metres; cells and labels as for read_vtk_mesh().
+   * Throws InputError naming @p file and @p parameter.
+   */
+  MeshDescription
+  read_vtu_mesh(const std::string &file,
+                const double       length_unit,
+                const std::string &parameter);
+
+  /**
    * Read an Abaqus input file (.inp): *Node and *Element blocks of type
    * C3D4 or C3D8 (other 3d types refused, 2d ones ignored), labels from
    * element sets (the ELSET= of an *Element block and *Elset blocks,
@@ -38,7 +50,8 @@ namespace RestShape
                    const std::string &parameter);
 
   /**
-   * Read a mesh by its extension: .msh (gmsh, any version), .vtk or .inp;
+   * Read a mesh by its extension: .msh (gmsh, any version), .vtk, .vtu or
+   * .inp;
    * others are an InputError naming @p parameter and the formats.
    */
   MeshDescription
