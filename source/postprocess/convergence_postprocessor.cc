@@ -1,6 +1,8 @@
 // convergence.csv and convergence.txt: one row per refinement cycle.
 #include <restshape/postprocess/convergence_postprocessor.h>
 
+#include <sstream>
+
 namespace RestShape
 {
   using namespace dealii;
@@ -48,11 +50,34 @@ namespace RestShape
     for (const std::string &key : rated)
       with_rates.evaluate_convergence_rates(
         key, ConvergenceTable::reduction_rate_log2);
-    in.output.write_text("convergence.txt", [&](std::ostream &out) {
-      with_rates.write_text(out);
-    });
+    const std::string text = described_table(with_rates);
+    in.output.write_text("convergence.txt",
+                         [&](std::ostream &out) { out << text; });
     if (in.cycle == in.parameters.refinement.cycles)
-      with_rates.write_text(in.pcout.get_stream());
+      in.pcout << text;
+  }
+
+  std::string
+  ConvergencePostprocessor::described_table(const ConvergenceTable &table)
+  {
+    // deal.II names a rate column KEY...red.rate.log2; each column is
+    // described on a line "# N: name" before the aligned rows.
+    std::ostringstream raw;
+    table.write_text(raw, TableHandler::table_with_separate_column_description);
+    const std::string  rate_suffix = "...red.rate.log2";
+    std::istringstream lines(raw.str());
+    std::ostringstream out;
+    std::string        line;
+    while (std::getline(lines, line))
+      {
+        const auto at = line.find(rate_suffix);
+        if (line.rfind("# ", 0) == 0 && at != std::string::npos)
+          line = line.substr(0, at) +
+                 "_rate: log2 of its ratio to the previous cycle (the order "
+                 "in h when each cycle halves the cells; '-' on cycle 0)";
+        out << line << '\n';
+      }
+    return out.str();
   }
 
   void

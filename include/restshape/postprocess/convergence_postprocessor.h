@@ -25,6 +25,11 @@ namespace RestShape
                const VectorType        &field,
                const std::string       &key);
 
+    /// @p table as text: a line "# N: name" per column (the rate columns
+    /// named KEY_rate and explained), then the aligned rows.
+    static std::string
+    described_table(const dealii::ConvergenceTable &table);
+
     dealii::ConvergenceTable         table;
     std::vector<std::vector<double>> rows;
     /// Of the current cycle.
