@@ -347,6 +347,15 @@ namespace RestShape
     summary.set("inverse_iterations", long(inverse_result.iterations));
     summary.set("forward_solves", long(inverse_result.forward_solves));
     summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
+    if (parameters.inverse.method == InverseParameters::Method::direct)
+      {
+        summary.set("direct_inverse_converged",
+                    inverse_result.direct.converged);
+        summary.set("direct_inverse_newton_steps",
+                    long(inverse_result.direct.newton_steps));
+        summary.set("direct_inverse_jacobian_products",
+                    long(inverse_result.direct.jacobian_products));
+      }
     summary.set("mean_error_mm", inverse_result.mean_error * 1e3);
     summary.set("max_error_mm", inverse_result.max_error * 1e3);
     if (contact)

@@ -54,6 +54,19 @@ namespace RestShape
                       "acceleration of the same fixed point (safeguarded: a "
                       "step that makes the error worse or would invert a "
                       "cell falls back to the plain update).");
+    prm.declare_entry(
+      "Method",
+      "fixed point",
+      Patterns::Selection("fixed point|direct"),
+      "fixed point: the rest-shape iteration of Sellier and Morin et al. "
+      "from the target (with Acceleration). direct: first Newton's method "
+      "on the equilibrium at the target geometry with the rest shape as "
+      "unknown (Jacobian-free: each Jacobian product is one residual "
+      "assembly, preconditioned by the forward tangent; contact is not "
+      "part of it), then the fixed point from that rest shape, which "
+      "checks it with a forward solve (with contact) and polishes it where "
+      "needed. When the direct Newton fails the fixed point starts from "
+      "the target.");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(1, 20),
@@ -67,6 +80,8 @@ namespace RestShape
   {
     prm.enter_subsection("Inverse problem");
     enabled = prm.get_bool("Enabled");
+    method =
+      prm.get("Method") == "direct" ? Method::direct : Method::fixed_point;
     measure = prm.get("Error measure") == "max" ? Measure::max : Measure::mean;
     tolerance = prm.get_double("Tolerance") * 1e-3;
     {

@@ -322,6 +322,30 @@ namespace RestShape
     return stats;
   }
 
+  VectorType
+  InverseProblem::direct_inverse(const VectorType &initial_rest,
+                                 const LoadState  &load,
+                                 InverseResult    &result)
+  {
+    VectorType rest = forward.owned_copy(initial_rest);
+    if (contact != nullptr)
+      contact->reset(); // contact is not part of the direct inverse
+    {
+      TimerOutput::Scope scope(timer, "Direct inverse");
+      result.direct =
+        DirectInverse(forward, pcout).solve(load, forward.zero_vector(), rest);
+    }
+    const DirectInverseResult &r = result.direct;
+    pcout << "  Direct inverse: "
+          << (r.converged ? "converged" : "failed (" + r.failure + ")")
+          << " in " << r.newton_steps << " Newton steps (" << r.factorisations
+          << " factorisations, " << r.jacobian_products << " Jacobian products)"
+          << (r.converged ? "; the fixed point checks it" :
+                            "; the fixed point starts from the target")
+          << std::endl;
+    return rest;
+  }
+
   std::string
   InverseProblem::next_rest_shape(const VectorType    &w,
                                   const VectorType    &f,
@@ -383,9 +407,30 @@ namespace RestShape
     history.clear();
     const LoadState load = forward.scene_load();
     set_admissible_target(result);
+    // Method = direct: the fixed point starts from the direct inverse's
+    // rest shape, Newton from the target at the full load. Where the image
+    // crosses the obstacle, contact acts at the target, which the direct
+    // inverse does not model: the fixed point starts from the target.
+    VectorType        direct_rest, target_guess;
+    const VectorType *rest = &initial_rest;
+    if (parameters.method == InverseParameters::Method::direct)
+      {
+        if (target_shift.linfty_norm() > 0)
+          pcout << "  Direct inverse: not used, the image crosses the "
+                   "obstacle (contact acts at the target); the fixed point "
+                   "starts from the admissible target"
+                << std::endl;
+        else
+          direct_rest = direct_inverse(initial_rest, load, result);
+        if (result.direct.converged)
+          {
+            rest         = &direct_rest;
+            target_guess = forward.zero_vector();
+            guess        = &target_guess;
+          }
+      }
     VectorType      start;
-    SolveStatistics stats =
-      first_solve(initial_rest, guess, load, result, start);
+    SolveStatistics stats = first_solve(*rest, guess, load, result, start);
     if (!stats.converged)
       return finish(result,
                     "the forward solve from the initial rest shape did not "

@@ -244,6 +244,14 @@ namespace RestShape
     unsigned int max_iterations;
     Acceleration acceleration;
     unsigned int anderson_depth;
+    /// fixed point: the iteration from the target; direct: first Newton on
+    /// the equilibrium at the target with the rest shape as unknown, then
+    /// the fixed point from its rest shape (which checks and polishes it).
+    enum class Method
+    {
+      fixed_point,
+      direct
+    } method = Method::fixed_point;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

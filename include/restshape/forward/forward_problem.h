@@ -342,6 +342,14 @@ namespace RestShape
      */
     const VectorType &
     raw_residual() const;
+    /// The residual of the last assembly with the Newton constraints
+    /// condensed (external minus internal forces, N; zero at constrained
+    /// DoFs, owned).
+    const VectorType &
+    condensed_residual() const
+    {
+      return residual_condensed;
+    }
 
   private:
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.

@@ -10,6 +10,7 @@
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/inverse/anderson.h>
+#include <restshape/inverse/direct_inverse.h>
 #include <restshape/io/output.h>
 
 #include <string>
@@ -46,6 +47,8 @@ namespace RestShape
     /// beyond the obstacle, and their largest and mean distance to it (m).
     unsigned int unreachable_nodes = 0;
     double       unreachable_max = 0, unreachable_mean = 0;
+    /// The direct inverse before the fixed point (Method = direct).
+    DirectInverseResult direct;
   };
 
   /**
@@ -131,6 +134,12 @@ namespace RestShape
                 const LoadState  &load,
                 InverseResult    &result,
                 VectorType       &start);
+    /// Method = direct: the direct inverse from @p initial_rest (its
+    /// figures in @p result.direct); returns its rest shape.
+    VectorType
+    direct_inverse(const VectorType &initial_rest,
+                   const LoadState  &load,
+                   InverseResult    &result);
     /// The next rest shape from the iterate @p w and its residual @p f:
     /// Anderson's (if @p accelerate) or the plain w + f, shortened until
     /// no cell inverts. Returns "" or why there is none.

@@ -1,0 +1,83 @@
+// The direct inverse: Newton's method on the equilibrium at the target
+// geometry with the rest shape as the unknown.
+#ifndef restshape_direct_inverse_h
+#define restshape_direct_inverse_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <restshape/forward/forward_problem.h>
+
+#include <string>
+
+namespace RestShape
+{
+  /// What the direct inverse did.
+  struct DirectInverseResult
+  {
+    bool         converged = false;
+    std::string  failure;               // why not
+    unsigned int newton_steps      = 0; // accepted Newton steps
+    unsigned int jacobian_products = 0; // one residual assembly each
+    unsigned int factorisations    = 0; // of the forward tangent
+    double       relative_residual = 0; // |R| / |R(initial rest)|
+  };
+
+  /**
+   * Find the rest displacement w = X_rest - X (X: the mesh, which is the
+   * target) for which the target, displaced by @p target_shift (the
+   * admissible target; zero without contact), is in equilibrium under
+   * @p load: R(d = target_shift; w) = 0, R the forward residual (external
+   * minus internal forces, with every load, support and constraint of the
+   * forward problem; contact is not part of it). Newton's method in w,
+   * Jacobian-free: the product with dR/dw is a finite difference of two
+   * residual assemblies, solved by right-preconditioned GMRES with the
+   * factorised forward tangent dR/dd (for small strains dR/dw = -dR/dd,
+   * so GMRES needs a few iterations); a backtracking line search on |R|
+   * that never accepts a rest shape with an inverted cell; continuation in
+   * the load (a failed increment is halved; after three failed increments
+   * it gives up). A load step fails after 15 Newton steps or two in a row
+   * that keep more than 90 % of the residual (the cantilever's large
+   * rotations: the Newton step in the rest shape is then a poor model).
+   */
+  class DirectInverse
+  {
+  public:
+    DirectInverse(ForwardProblem &forward, dealii::ConditionalOStream &pcout);
+
+    /// Start from @p rest (owned) and leave the result there; the forward
+    /// problem is left in the state of the last residual assembly.
+    DirectInverseResult
+    solve(const LoadState  &load,
+          const VectorType &target_shift,
+          VectorType       &rest);
+
+  private:
+    struct Jacobian;
+    struct Preconditioner;
+
+    /// R(d; w) at @p w (owned) into @p r; false if a cell inverts.
+    bool
+    residual(const VectorType &w, VectorType &r);
+    /// Newton at the current load (fraction @p s of the scene's) from
+    /// @p w until |R| <= @p tolerance |R0|; false (result.failure) if not.
+    bool
+    newton(VectorType &w, const double tolerance, const double s);
+    /// The Newton update at @p w with residual @p r: GMRES on
+    /// J delta = -r, right-preconditioned by the forward tangent.
+    VectorType
+    newton_direction(const VectorType &w, const VectorType &r);
+    /// Backtrack along @p delta until |R| decreases (Armijo) with no
+    /// inverted cell; updates @p w and @p r.
+    bool
+    line_search(VectorType &w, VectorType &r, const VectorType &delta);
+
+    ForwardProblem             &forward;
+    dealii::ConditionalOStream &pcout;
+    LoadState                   load;
+    VectorType                  d;
+    double                      reference = 1; // |R| at the start, full load
+    DirectInverseResult         result;
+  };
+} // namespace RestShape
+
+#endif

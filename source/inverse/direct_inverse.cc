@@ -1,0 +1,232 @@
+// DirectInverse: Jacobian-free Newton on the equilibrium at the target
+// with the rest shape as unknown (see direct_inverse.h).
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <restshape/inverse/direct_inverse.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Newton stops at |R| <= this times |R| at the initial rest shape
+    /// under the full load; on the way to the full load, at the looser
+    /// step tolerance.
+    constexpr double       newton_tolerance = 1e-9;
+    constexpr double       step_tolerance   = 1e-6;
+    constexpr unsigned int max_newton_steps = 15; // per load step
+    /// A Newton step that keeps more than this of |R| makes slow progress;
+    /// two in a row fail the load step (the rest shape's Newton step is
+    /// not a good model of the residual there: large rotations).
+    constexpr double slow_progress = 0.9;
+    /// Load steps that may fail before the direct inverse gives up.
+    constexpr unsigned int max_failed_load_steps = 3;
+    /// GMRES reduces the linearised residual by this (inexact Newton), in
+    /// at most this many iterations.
+    constexpr double       gmres_reduction = 1e-4;
+    constexpr unsigned int max_gmres_steps = 40;
+    /// Finite-difference step: the largest nodal perturbation, as a
+    /// fraction of the body's size.
+    constexpr double fd_step = 1e-7;
+    /// Line search: halvings, and the decrease it asks for (Armijo).
+    constexpr unsigned int max_halvings = 10;
+    constexpr double       armijo       = 1e-4;
+
+    LoadState
+    scaled(const LoadState &load, const double s)
+    {
+      return LoadState{s * load.acceleration, s * load.pressure};
+    }
+  } // namespace
+
+  /// J v = (R(w + e v) - R(w)) / e, one residual assembly.
+  struct DirectInverse::Jacobian
+  {
+    DirectInverse     &self;
+    const VectorType  &w, &r;
+    mutable VectorType trial;
+
+    void
+    vmult(VectorType &dst, const VectorType &src) const
+    {
+      const double norm = src.linfty_norm();
+      dst               = 0;
+      if (norm == 0)
+        return;
+      const double e = fd_step * self.forward.mesh().diameter() / norm;
+      trial          = w;
+      trial.add(e, src);
+      self.residual(trial, dst);
+      dst -= r;
+      dst /= e;
+      ++self.result.jacobian_products;
+    }
+  };
+
+  /// The factorised forward tangent dR/dd (dR/dw = -dR/dd for small
+  /// strains, and R's sign makes the product with dR/dw near identity).
+  struct DirectInverse::Preconditioner
+  {
+    ForwardProblem &forward;
+
+    void
+    vmult(VectorType &dst, const VectorType &src) const
+    {
+      forward.solve_with_tangent(dst, src);
+    }
+  };
+
+  DirectInverse::DirectInverse(ForwardProblem     &forward,
+                               ConditionalOStream &pcout)
+    : forward(forward)
+    , pcout(pcout)
+  {}
+
+  bool
+  DirectInverse::residual(const VectorType &w, VectorType &r)
+  {
+    forward.set_state(d, w, load);
+    const bool valid = forward.evaluate(false);
+    r                = forward.condensed_residual();
+    return valid;
+  }
+
+  DirectInverseResult
+  DirectInverse::solve(const LoadState  &scene_load,
+                       const VectorType &target_shift,
+                       VectorType       &rest)
+  {
+    result       = DirectInverseResult();
+    d            = forward.owned_copy(target_shift);
+    load         = scene_load;
+    VectorType r = forward.zero_vector();
+    if (!residual(rest, r))
+      {
+        result.failure = "the initial rest shape has an inverted cell";
+        return result;
+      }
+    reference = r.l2_norm();
+    // Continuation in the load: a converged increment doubles the next,
+    // a failed one is halved.
+    double       done = 0, increment = 1;
+    unsigned int failed = 0;
+    while (done < 1)
+      {
+        const double s   = std::min(1., done + increment);
+        VectorType   w   = rest;
+        load             = scaled(scene_load, s);
+        const bool final = (s == 1);
+        if (newton(w, final ? newton_tolerance : step_tolerance, s))
+          {
+            rest      = w;
+            done      = s;
+            increment = std::min(2 * increment, 1.);
+            continue;
+          }
+        increment = (s - done) / 2;
+        if (++failed == max_failed_load_steps)
+          {
+            result.failure += "; gave up after " + std::to_string(failed) +
+                              " failed load steps, at " + std::to_string(done) +
+                              " of the load";
+            return result;
+          }
+      }
+    result.converged = true;
+    return result;
+  }
+
+  bool
+  DirectInverse::newton(VectorType &w, const double tolerance, const double s)
+  {
+    VectorType r = forward.zero_vector();
+    if (!residual(w, r))
+      return false;
+    unsigned int slow = 0;
+    double       last = std::numeric_limits<double>::max();
+    for (unsigned int step = 0;; ++step)
+      {
+        result.relative_residual = r.l2_norm() / reference;
+        pcout << "  Direct inverse, load " << s << ", Newton " << step
+              << ": |R|/|R0| = " << result.relative_residual << std::endl;
+        if (result.relative_residual <= tolerance)
+          return true;
+        slow = result.relative_residual > slow_progress * last ? slow + 1 : 0;
+        last = result.relative_residual;
+        if (step == max_newton_steps || slow == 2)
+          {
+            result.failure =
+              slow == 2 ? "two Newton steps in a row kept more than " +
+                            std::to_string(int(100 * slow_progress)) +
+                            " % of the residual" :
+                          "no convergence in " +
+                            std::to_string(max_newton_steps) + " Newton steps";
+            return false;
+          }
+        VectorType delta = newton_direction(w, r);
+        if (!line_search(w, r, delta))
+          return false;
+        ++result.newton_steps;
+      }
+  }
+
+  VectorType
+  DirectInverse::newton_direction(const VectorType &w, const VectorType &r)
+  {
+    VectorType delta = forward.zero_vector(), minus_r = r;
+    minus_r *= -1;
+    forward.set_state(d, w, load);
+    forward.factorise_consistent_tangent(delta, r);
+    ++result.factorisations;
+    delta = 0;
+    SolverControl           control(max_gmres_steps,
+                          gmres_reduction * r.l2_norm(),
+                          false,
+                          false);
+    SolverGMRES<VectorType> gmres(
+      control,
+      SolverGMRES<VectorType>::AdditionalData(max_gmres_steps + 2, true));
+    const Jacobian       jacobian{*this, w, r, forward.zero_vector()};
+    const Preconditioner preconditioner{forward};
+    try
+      {
+        gmres.solve(jacobian, delta, minus_r, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        // The best iterate so far; the line search judges it.
+      }
+    return delta;
+  }
+
+  bool
+  DirectInverse::line_search(VectorType       &w,
+                             VectorType       &r,
+                             const VectorType &delta)
+  {
+    // Backtracking on |R|, never through an inverted rest cell.
+    const double r_norm  = r.l2_norm();
+    VectorType   w_trial = w, r_trial = forward.zero_vector();
+    double       alpha = 1;
+    for (unsigned int h = 0; h <= max_halvings; ++h, alpha /= 2)
+      {
+        w_trial = w;
+        w_trial.add(alpha, delta);
+        if (residual(w_trial, r_trial) &&
+            r_trial.l2_norm() <= (1 - armijo * alpha) * r_norm)
+          {
+            w = w_trial;
+            r = r_trial;
+            return true;
+          }
+      }
+    result.failure = "the line search could not reduce the residual";
+    return false;
+  }
+} // namespace RestShape
