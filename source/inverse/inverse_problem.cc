@@ -322,12 +322,23 @@ namespace RestShape
     return stats;
   }
 
-  VectorType
+  bool
   InverseProblem::direct_inverse(const VectorType &initial_rest,
                                  const LoadState  &load,
-                                 InverseResult    &result)
+                                 InverseResult    &result,
+                                 VectorType       &rest)
   {
-    VectorType rest = forward.owned_copy(initial_rest);
+    // Where the image crosses the obstacle, contact acts at the target,
+    // which the direct inverse does not model.
+    if (target_shift.linfty_norm() > 0)
+      {
+        pcout << "  Direct inverse: not used, the image crosses the obstacle "
+                 "(contact acts at the target); the fixed point starts from "
+                 "the admissible target"
+              << std::endl;
+        return false;
+      }
+    rest = forward.owned_copy(initial_rest);
     if (contact != nullptr)
       contact->reset(); // contact is not part of the direct inverse
     {
@@ -343,8 +354,9 @@ namespace RestShape
           << (r.converged ? "; the fixed point checks it" :
                             "; the fixed point starts from the target")
           << std::endl;
-    return rest;
+    return r.converged;
   }
+
 
   std::string
   InverseProblem::next_rest_shape(const VectorType    &w,
@@ -408,26 +420,15 @@ namespace RestShape
     const LoadState load = forward.scene_load();
     set_admissible_target(result);
     // Method = direct: the fixed point starts from the direct inverse's
-    // rest shape, Newton from the target at the full load. Where the image
-    // crosses the obstacle, contact acts at the target, which the direct
-    // inverse does not model: the fixed point starts from the target.
+    // rest shape, Newton from the target at the full load.
     VectorType        direct_rest, target_guess;
     const VectorType *rest = &initial_rest;
-    if (parameters.method == InverseParameters::Method::direct)
+    if (parameters.method == InverseParameters::Method::direct &&
+        direct_inverse(initial_rest, load, result, direct_rest))
       {
-        if (target_shift.linfty_norm() > 0)
-          pcout << "  Direct inverse: not used, the image crosses the "
-                   "obstacle (contact acts at the target); the fixed point "
-                   "starts from the admissible target"
-                << std::endl;
-        else
-          direct_rest = direct_inverse(initial_rest, load, result);
-        if (result.direct.converged)
-          {
-            rest         = &direct_rest;
-            target_guess = forward.zero_vector();
-            guess        = &target_guess;
-          }
+        rest         = &direct_rest;
+        target_guess = forward.zero_vector();
+        guess        = &target_guess;
       }
     VectorType      start;
     SolveStatistics stats = first_solve(*rest, guess, load, result, start);

@@ -134,12 +134,14 @@ namespace RestShape
                 const LoadState  &load,
                 InverseResult    &result,
                 VectorType       &start);
-    /// Method = direct: the direct inverse from @p initial_rest (its
-    /// figures in @p result.direct); returns its rest shape.
-    VectorType
+    /// Method = direct: the direct inverse from @p initial_rest into
+    /// @p rest (its figures in @p result.direct); whether it converged (it
+    /// is not used where the image crosses the obstacle).
+    bool
     direct_inverse(const VectorType &initial_rest,
                    const LoadState  &load,
-                   InverseResult    &result);
+                   InverseResult    &result,
+                   VectorType       &rest);
     /// The next rest shape from the iterate @p w and its residual @p f:
     /// Anderson's (if @p accelerate) or the plain w + f, shortened until
     /// no cell inverts. Returns "" or why there is none.
