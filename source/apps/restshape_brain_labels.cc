@@ -121,6 +121,19 @@ namespace
     return s;
   }
 
+  /// The voxels of the largest face-connected component of @p mask.
+  std::vector<bool>
+  largest_component(const LabelledImage &image, const std::vector<bool> &mask)
+  {
+    const auto [component, sizes] = face_connected_components(image, mask);
+    const int largest =
+      std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+    std::vector<bool> in(mask.size());
+    for (std::size_t v = 0; v < mask.size(); ++v)
+      in[v] = component[v] == largest;
+    return in;
+  }
+
   /// The brain: the largest component of the mask, its cavities filled.
   std::vector<bool>
   brain_region(const LabelledImage &brain)
@@ -129,13 +142,7 @@ namespace
     std::vector<bool> in(n);
     for (std::size_t v = 0; v < n; ++v)
       in[v] = brain.labels[v] != 0;
-    {
-      const auto [component, sizes] = face_connected_components(brain, in);
-      const int largest =
-        std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
-      for (std::size_t v = 0; v < n; ++v)
-        in[v] = component[v] == largest;
-    }
+    in = largest_component(brain, in);
     std::vector<bool> out_of_brain(n);
     for (std::size_t v = 0; v < n; ++v)
       out_of_brain[v] = !in[v];
@@ -275,16 +282,15 @@ namespace
         std::vector<bool> mine(n);
         for (std::size_t v = 0; v < n; ++v)
           mine[v] = labels.labels[v] == label;
-        const auto [component, sizes] = face_connected_components(labels, mine);
-        const int largest =
-          std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+        const std::vector<bool> kept = largest_component(labels, mine);
         for (std::size_t v = 0; v < n; ++v)
-          if (mine[v] && component[v] != largest)
+          if (mine[v] && !kept[v])
             labels.labels[v] = unknown;
       }
     fill_unknown(labels);
+    const auto counts = labels.label_counts();
     for (const ImageLabel label : {cerebrum, tumour, cerebellum, brainstem})
-      if (labels.label_counts().count(label) == 0)
+      if (counts.count(label) == 0)
         throw InputError(s.out,
                          "--tumour",
                          "label " + std::to_string(label) +

@@ -197,17 +197,19 @@ namespace
     return map.tissue_names();
   }
 
+  /// Size, spacing and labels of @p image, with @p counts its voxels per
+  /// label.
   void
-  report_image(const LabelledImage &image,
-               const std::string   &file,
-               const LabelNames    &names)
+  report_image(const LabelledImage                       &image,
+               const std::map<unsigned int, std::size_t> &counts,
+               const std::string                         &file,
+               const LabelNames                          &names)
   {
     const auto h = image.spacing();
     std::cout << std::setprecision(4) << "image " << file << ": "
               << image.size[0] << "x" << image.size[1] << "x" << image.size[2]
               << " voxels of " << h[0] << "x" << h[1] << "x" << h[2]
               << " mm; labels";
-    const auto counts = image.label_counts();
     // An atlas has hundreds of labels: then only their list.
     constexpr std::size_t max_listed = 12;
     if (counts.size() > max_listed)
@@ -226,13 +228,16 @@ namespace
   }
 
   /// --close-sulci: the closed image (moved from @p image unless the
-  /// skull still needs it: an atlas is large).
+  /// skull still needs it: an atlas is large); @p counts: the voxels per
+  /// label of @p image.
   LabelledImage
-  close_sulci(LabelledImage &image, const MesherSettings &s)
+  close_sulci(LabelledImage                             &image,
+              const std::map<unsigned int, std::size_t> &counts,
+              const MesherSettings                      &s)
   {
     dealii::Timer timer;
     std::size_t   n_labelled = 0;
-    for (const auto &[label, count] : image.label_counts())
+    for (const auto &[label, count] : counts)
       n_labelled += count;
     LabelledImage      closed = s.skull_out.empty() ? std::move(image) : image;
     const ClosedVoxels added  = close_labelled_image(closed, s.close_sulci);
@@ -461,20 +466,22 @@ main(int argc, char **argv)
           skull_cavity(read_labelled_image(s.skull_image, "--skull-image"),
                        s.skull_image,
                        "--skull-image");
-      LabelledImage    image = read_labelled_image(s.image_file, "--image");
-      const LabelNames names = prepare_labels(image, s);
-      report_image(image, s.image_file, names);
+      LabelledImage    image  = read_labelled_image(s.image_file, "--image");
+      const LabelNames names  = prepare_labels(image, s);
+      const auto       counts = image.label_counts();
+      report_image(image, counts, s.image_file, names);
 
       // The closed image is meshed; the skull comes from the image as read.
       LabelledImage closed;
       if (s.close_sulci > 0)
-        closed = close_sulci(image, s);
+        closed = close_sulci(image, counts, s);
       // The image as read makes the skull; the closed one is not needed
       // after meshing.
       LabelledImage     &meshed_image = s.close_sulci > 0 ? closed : image;
-      const ImageVolumes volumes{meshed_image.label_counts(),
+      const ImageVolumes volumes{s.close_sulci > 0 ? closed.label_counts() :
+                                                     counts,
                                  meshed_image.spacing()};
-      MeshDescription    mesh =
+      MeshDescription mesh =
         make_mesh(meshed_image, s, s.close_sulci == 0 && !s.skull_out.empty());
       for (const auto &[label, name] : names.by_label())
         mesh.names.add(label, name, s.out, "--out");

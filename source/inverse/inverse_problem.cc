@@ -357,7 +357,6 @@ namespace RestShape
     return r.converged;
   }
 
-
   std::string
   InverseProblem::next_rest_shape(const VectorType    &w,
                                   const VectorType    &f,
