@@ -15,6 +15,7 @@
 #include <restshape/app/simulator.h>
 #include <restshape/app/study.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
 #include <restshape/forward/linear_solver.h>
@@ -131,6 +132,7 @@ main(int argc, char **argv)
 {
   if (wants_study(argc, argv))
     return study_main(argc, argv);
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc,
                                        argv,
                                        numbers::invalid_unsigned_int);

@@ -23,6 +23,7 @@
 
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/mpi_start.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
@@ -256,6 +257,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {

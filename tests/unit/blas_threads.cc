@@ -7,6 +7,7 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <dlfcn.h>
+#include <restshape/base/mpi_start.h>
 #include <restshape/forward/linear_solver.h>
 
 #include <cstdlib>
@@ -21,6 +22,7 @@ int
 main(int argc, char **argv)
 {
   unsetenv("OPENBLAS_NUM_THREADS");
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using GetThreads = int (*)();
   using SetThreads = void (*)(int);

@@ -14,6 +14,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include <algorithm>
 
 #include "test_utilities.h"
@@ -275,6 +277,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   material_point_checks();
   projected_tangent_checks();

@@ -17,6 +17,7 @@
 // top, each component, relative to the weight).
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
 #include <restshape/contact/contact.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
@@ -102,6 +103,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string dir       = std::filesystem::temp_directory_path().string();
   const std::string mesh_file = dir + "/restshape_crease_hemisphere.msh";

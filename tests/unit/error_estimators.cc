@@ -13,6 +13,7 @@
 // Runs on 1 and on 2 MPI ranks (tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
 #include <restshape/postprocess/error_estimator.h>
 
 #include "test_utilities.h"
@@ -63,6 +64,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                     z0 = 0.010; // the interface, m
 

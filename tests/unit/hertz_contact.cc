@@ -11,6 +11,7 @@
 // more than the accepted 0.1 % of it.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
 #include <restshape/contact/contact.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
@@ -84,6 +85,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Result                     coarse = solve(2);
   const Result                     fine   = solve(3);

@@ -12,6 +12,7 @@
 //    converges; Anderson converges even without the walls.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
 #include <restshape/contact/contact.h>
 #include <restshape/inverse/inverse_problem.h>
 
@@ -73,6 +74,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   const Run plain    = run("meshes/column_tet.msh", "none", "");

@@ -8,6 +8,8 @@
 // iteration counts.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include "test_utilities.h"
 
 using namespace dealii;
@@ -41,6 +43,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   for (const std::string cell_type : {"tetrahedra", "hexahedra"})
     {

@@ -11,6 +11,8 @@
 //     mesh back: rest_shape.msh depends on it).
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include <algorithm>
 #include <tuple>
 
@@ -80,6 +82,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MeshDescription file   = read_gmsh("meshes/brain_coarse.msh", 1e-3);
   MeshDescription       sorted = file;

@@ -12,6 +12,8 @@
 // All counts are printed for the record.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include "test_utilities.h"
 
 using namespace dealii;
@@ -60,6 +62,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Result                     consistent = solve("consistent");
   const Result                     warped     = solve("warped");

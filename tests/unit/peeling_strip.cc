@@ -15,6 +15,8 @@
 // force balances the buoyed weight, and a is within 5 % of beam theory.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include <algorithm>
 
 #include "test_utilities.h"
@@ -92,6 +94,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check(10);
   check(1);

@@ -18,6 +18,8 @@
 // unloaded ones (tried).
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
+
 #include "test_utilities.h"
 
 using namespace dealii;
@@ -133,6 +135,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   check_stationary("P2", 9.81);

@@ -17,6 +17,7 @@
 // triangulation; tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/mpi_start.h>
 #include <restshape/forward/state_transfer.h>
 
 #include "test_utilities.h"
@@ -137,6 +138,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   {

@@ -15,6 +15,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <restshape/base/mpi_start.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -218,6 +219,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string one = write_ball(false), two = write_ball(true);
   check_inflation(one);
