@@ -100,21 +100,26 @@ namespace RestShape
   }
 
   void
-  ForwardProblem::factorise_consistent_tangent(VectorType       &x,
-                                               const VectorType &b)
+  ForwardProblem::prepare_consistent_tangent()
   {
     const TangentType chosen = tangent_type;
     tangent_type             = TangentType::consistent;
     const bool valid         = assemble(Assemble::residual_and_matrix);
     tangent_type             = chosen;
     AssertThrow(valid, ExcMessage("an inverted cell in an equilibrium"));
-    linear_solver->solve(tangent, x, b);
+    linear_solver->prepare(tangent);
   }
 
   void
   ForwardProblem::solve_with_tangent(VectorType &x, const VectorType &b)
   {
-    linear_solver->solve_factored(x, b);
+    linear_solver->solve_prepared(x, b);
+  }
+
+  bool
+  ForwardProblem::tangent_solves_are_exact() const
+  {
+    return linear_solver->solves_prepared_exactly();
   }
 
   void

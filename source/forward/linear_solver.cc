@@ -68,6 +68,7 @@ namespace RestShape
                       const VectorType &b,
                       const double      relative_tolerance)
   {
+    last_matrix = &A;
     if (parameters.linear_solver == LinearSolverType::cg_amg)
       return solve_iteratively(A,
                                x,
@@ -90,6 +91,13 @@ namespace RestShape
   LinearSolver::solve_directly(const MatrixType &A,
                                VectorType       &x,
                                const VectorType &b)
+  {
+    factorise(A);
+    solve_prepared(x, b);
+  }
+
+  void
+  LinearSolver::factorise(const MatrixType &A)
   {
     Epetra_CrsMatrix &matrix =
       const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
@@ -115,9 +123,7 @@ namespace RestShape
           throw SolverFailure("MUMPS: symbolic factorisation failed");
         factored_matrix = &matrix;
       }
-    direct_problem->SetLHS(&x.trilinos_vector());
-    direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
-      static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+    last_matrix      = &A;
     const int status = direct_solver->NumericFactorization();
     if (status != 0)
       throw SolverFailure("the direct solver (MUMPS) could not factorise the "
@@ -126,14 +132,37 @@ namespace RestShape
                           std::to_string(status) +
                           "): singular matrix? check that the scene fixes "
                           "every rigid-body motion");
-    direct_solver->Solve();
   }
 
   void
-  LinearSolver::solve_factored(VectorType &x, const VectorType &b)
+  LinearSolver::prepare(const MatrixType &A)
   {
+    last_matrix = &A;
+    if (parameters.linear_solver == LinearSolverType::cg_amg)
+      setup_amg(A, false);
+    else
+      factorise(A);
+  }
+
+  bool
+  LinearSolver::solves_prepared_exactly() const
+  {
+    return parameters.linear_solver != LinearSolverType::cg_amg;
+  }
+
+  void
+  LinearSolver::solve_prepared(VectorType &x, const VectorType &b)
+  {
+    AssertThrow(last_matrix != nullptr,
+                ExcMessage("solve_prepared() needs a solve or prepare first"));
+    if (!solves_prepared_exactly())
+      {
+        x = 0;
+        solve_iteratively(*last_matrix, x, b, prepared_solve_tolerance);
+        return;
+      }
     AssertThrow(direct_solver != nullptr,
-                ExcMessage("solve_factored() needs a direct solve first"));
+                ExcMessage("solve_prepared() needs a factorisation first"));
     direct_problem->SetLHS(&x.trilinos_vector());
     direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
@@ -207,6 +236,29 @@ namespace RestShape
   } // namespace
 
   unsigned int
+  LinearSolver::lagged_iteration_cap(const VectorType &b,
+                                     const VectorType &x,
+                                     const MatrixType &A,
+                                     const double      target) const
+  {
+    if (amg_iterations_per_decade == 0)
+      return max_cg_iterations;
+    VectorType r = b;
+    if (x.linfty_norm() > 0)
+      {
+        A.vmult(r, x);
+        r.sadd(-1., b);
+      }
+    const double decades =
+      std::max(1., std::log10(r.l2_norm() / std::max(target, 1e-300)));
+    return std::clamp(static_cast<unsigned int>(
+                        std::ceil(lagged_slowdown_cap *
+                                  amg_iterations_per_decade * decades)),
+                      min_lagged_iterations,
+                      max_cg_iterations);
+  }
+
+  unsigned int
   LinearSolver::solve_iteratively(const MatrixType &A,
                                   VectorType       &x,
                                   const VectorType &b,
@@ -216,10 +268,11 @@ namespace RestShape
     if (setup_amg(A, false))
       return run_krylov(A, x, b, target);
 
-    // Lagged AMG (an earlier step's): CG with it. If CG has slowed down
-    // by more than 1.5 times, the next solve rebuilds; if CG fails, this
-    // one rebuilds and solves again.
-    SolverControl control(2000, target);
+    // Lagged AMG (an earlier step's): CG with it, bounded by what the AMG
+    // needed when built. If CG has slowed down by more than 1.5 times, the
+    // next solve rebuilds; if CG needs more than lagged_slowdown_cap times
+    // (or fails), this one rebuilds and solves again.
+    SolverControl control(lagged_iteration_cap(b, x, A, target), target);
     if (run_cg(A, x, b, control))
       {
         const double now = iterations_per_decade(control, b);
@@ -269,7 +322,7 @@ namespace RestShape
                            const VectorType &b,
                            const double      target)
   {
-    SolverControl control(2000, target);
+    SolverControl control(max_cg_iterations, target);
     if (run_cg(A, x, b, control))
       {
         // The standard a lagged AMG is held to.
@@ -278,7 +331,7 @@ namespace RestShape
       }
     // The consistent co-rotational tangent can be indefinite at large
     // strains: GMRES does not need definiteness.
-    SolverControl gmres_control(5000, target);
+    SolverControl gmres_control(max_gmres_iterations, target);
     try
       {
         SolverGMRES<VectorType> gmres(

@@ -150,9 +150,8 @@ namespace RestShape
         constraints.condense(b);
         z = 0;
         if (j == 0)
-          forward.factorise_consistent_tangent(z, b);
-        else
-          forward.solve_with_tangent(z, b);
+          forward.prepare_consistent_tangent();
+        forward.solve_with_tangent(z, b);
         constraints.distribute(z);
         alpha.push_back(dot(Q[j], M, z));
         // Full re-orthogonalisation (twice is enough).

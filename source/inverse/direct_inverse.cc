@@ -182,21 +182,28 @@ namespace RestShape
     VectorType delta = forward.zero_vector(), minus_r = r;
     minus_r *= -1;
     forward.set_state(d, w, load);
-    forward.factorise_consistent_tangent(delta, r);
+    forward.prepare_consistent_tangent();
     ++result.factorisations;
-    delta = 0;
-    SolverControl           control(max_gmres_steps,
+    SolverControl        control(max_gmres_steps,
                           gmres_reduction * r.l2_norm(),
                           false,
                           false);
-    SolverGMRES<VectorType> gmres(
-      control,
-      SolverGMRES<VectorType>::AdditionalData(max_gmres_steps + 2, true));
     const Jacobian       jacobian{*this, w, r, forward.zero_vector()};
     const Preconditioner preconditioner{forward};
     try
       {
-        gmres.solve(jacobian, delta, minus_r, preconditioner);
+        // With CG + AMG the preconditioner is an inexact inner solve,
+        // which changes from one application to the next: flexible GMRES.
+        if (forward.tangent_solves_are_exact())
+          SolverGMRES<VectorType>(
+            control,
+            SolverGMRES<VectorType>::AdditionalData(max_gmres_steps + 2, true))
+            .solve(jacobian, delta, minus_r, preconditioner);
+        else
+          SolverFGMRES<VectorType>(control,
+                                   SolverFGMRES<VectorType>::AdditionalData(
+                                     max_gmres_steps + 2))
+            .solve(jacobian, delta, minus_r, preconditioner);
       }
     catch (const SolverControl::NoConvergence &)
       {

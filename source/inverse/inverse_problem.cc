@@ -345,6 +345,7 @@ namespace RestShape
       TimerOutput::Scope scope(timer, "Direct inverse");
       result.direct =
         DirectInverse(forward, pcout).solve(load, forward.zero_vector(), rest);
+      result.direct.used = true;
     }
     const DirectInverseResult &r = result.direct;
     pcout << "  Direct inverse: "

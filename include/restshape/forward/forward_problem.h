@@ -308,16 +308,22 @@ namespace RestShape
     }
 
     /**
-     * For the stability of the current state: assemble the consistent
-     * tangent (whatever Discretization/Tangent says) with the constraints
-     * of the last Newton step, factorise it and solve K x = b (direct
-     * solver). Then solve_with_tangent() reuses the factorisation.
+     * For solves with the tangent of the current state (stability check,
+     * direct inverse): assemble the consistent tangent (whatever
+     * Discretization/Tangent says) with the constraints of the last Newton
+     * step and prepare solves with it: the direct solver factorises it,
+     * CG + AMG sets up (or keeps, lagged) its AMG.
      */
     void
-    factorise_consistent_tangent(VectorType &x, const VectorType &b);
-    /// Solve with the factorisation of factorise_consistent_tangent().
+    prepare_consistent_tangent();
+    /// Solve K x = b with the tangent of prepare_consistent_tangent():
+    /// exactly with the direct solver, with CG + AMG to a relative
+    /// tolerance of LinearSolver::prepared_solve_tolerance.
     void
     solve_with_tangent(VectorType &x, const VectorType &b);
+    /// Whether solve_with_tangent() solves exactly (the direct solver).
+    bool
+    tangent_solves_are_exact() const;
     /// The constraints of the last Newton step (fixed DoFs, hanging nodes,
     /// active contact).
     const dealii::AffineConstraints<double> &

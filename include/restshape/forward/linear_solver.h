@@ -71,12 +71,28 @@ namespace RestShape
           const double      relative_tolerance = 0);
 
     /**
-     * Solve A x = b with the factorisation of the last direct solve (of
-     * the same matrix A): the direct solver only, for many right-hand
-     * sides.
+     * Prepare solves with @p A for many right-hand sides (solve_prepared()):
+     * the direct solver factorises it, CG + AMG sets up (or, lagged, keeps)
+     * its AMG. Throws SolverFailure if the factorisation fails.
      */
     void
-    solve_factored(VectorType &x, const VectorType &b);
+    prepare(const MatrixType &A);
+
+    /**
+     * Solve A x = b with the matrix of the last solve() or prepare(): the
+     * direct solver with its factorisation (exact), CG + AMG to the
+     * relative tolerance prepared_solve_tolerance (an inexact solve, for
+     * preconditioners inside a flexible Krylov method).
+     */
+    void
+    solve_prepared(VectorType &x, const VectorType &b);
+
+    /// Whether solve_prepared() solves exactly (the direct solver).
+    bool
+    solves_prepared_exactly() const;
+
+    /// The relative tolerance of solve_prepared() with CG + AMG.
+    static constexpr double prepared_solve_tolerance = 1e-3;
 
     /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG").
     std::string last_method;
@@ -89,6 +105,28 @@ namespace RestShape
                       const double      relative_tolerance);
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
+    /// MUMPS's (symbolic, when A is new, and) numeric factorisation of A.
+    void
+    factorise(const MatrixType &A);
+
+    /// The most CG iterations a lagged AMG may take for A x = b from the
+    /// current x down to @p target: lagged_slowdown_cap times the
+    /// iterations per decade of its first solve, at least
+    /// min_lagged_iterations (max_cg_iterations before any solve).
+    unsigned int
+    lagged_iteration_cap(const VectorType &b,
+                         const VectorType &x,
+                         const MatrixType &A,
+                         const double      target) const;
+
+    /// Krylov iteration limits: CG with a new AMG, then GMRES(200) if CG
+    /// breaks down (indefinite tangent).
+    static constexpr unsigned int max_cg_iterations    = 2000;
+    static constexpr unsigned int max_gmres_iterations = 5000;
+    /// A lagged AMG is rebuilt at once when CG would need more than this
+    /// many times its iterations per decade when it was built.
+    static constexpr double       lagged_slowdown_cap   = 3;
+    static constexpr unsigned int min_lagged_iterations = 30;
 
     /// Makes the AMG preconditioner for @p A as Solver/AMG update says: a
     /// new build, a recomputation on the aggregates of the first build, or
@@ -117,6 +155,8 @@ namespace RestShape
     std::unique_ptr<Epetra_LinearProblem> direct_problem;
     std::unique_ptr<Amesos_BaseSolver>    direct_solver;
     const void                           *factored_matrix = nullptr;
+    /// The matrix of the last solve() or prepare().
+    const MatrixType *last_matrix = nullptr;
 
     /// AMG, kept between solves with the same matrix object (the tangent
     /// of one mesh); its null space (the rigid-body modes) must outlive it.

@@ -14,6 +14,7 @@ namespace RestShape
   /// What the direct inverse did.
   struct DirectInverseResult
   {
+    bool         used      = false; // ran (not where the image crosses)
     bool         converged = false;
     std::string  failure;               // why not
     unsigned int newton_steps      = 0; // accepted Newton steps
