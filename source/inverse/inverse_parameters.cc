@@ -56,17 +56,18 @@ namespace RestShape
                       "cell falls back to the plain update).");
     prm.declare_entry(
       "Method",
-      "fixed point",
+      "direct",
       Patterns::Selection("fixed point|direct"),
-      "fixed point: the rest-shape iteration of Sellier and Morin et al. "
-      "from the target (with Acceleration). direct: first Newton's method "
-      "on the equilibrium at the target geometry with the rest shape as "
-      "unknown (Jacobian-free: each Jacobian product is one residual "
-      "assembly, preconditioned by the forward tangent; contact is not "
-      "part of it), then the fixed point from that rest shape, which "
-      "checks it with a forward solve (with contact) and polishes it where "
-      "needed. When the direct Newton fails the fixed point starts from "
-      "the target.");
+      "direct (the default): first Newton's method on the equilibrium at "
+      "the target geometry with the rest shape as unknown (Jacobian-free: "
+      "each Jacobian product is one residual assembly, preconditioned by "
+      "the forward tangent; contact is not part of it), then the fixed "
+      "point from that rest shape, which checks it with a forward solve "
+      "(with contact) and polishes it where needed. Not used where the "
+      "image crosses the obstacle (contact acts at the target); when its "
+      "Newton fails (large rotations) the fixed point starts from the "
+      "target. fixed point: only the rest-shape iteration of Sellier and "
+      "Morin et al. from the target (with Acceleration).");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(1, 20),

@@ -45,6 +45,7 @@ namespace
       obstacle +
       "\nend\n"
       "subsection Inverse problem\n set Enabled = true\n set Tolerance = 1e-8\n"
+      " set Method = fixed point\n"
       " set Acceleration = " +
       acceleration + "\nend\n");
     ContactProblem *contact = obstacle.empty() ? nullptr : &s.add_contact();
