@@ -27,3 +27,11 @@ timer_share() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }'
 # timer_seconds SECTION LOG: the wall seconds of a TimerOutput section in a
 # run's screen output.
 timer_seconds() { grep "^| $1 " "$2" | awk -F'|' '{ gsub(/[ s]/, "", $4); print $4 }'; }
+
+# timer_calls SECTION LOG: the number of calls of a TimerOutput section in a
+# run's screen output (0 if the section did not run).
+timer_calls() {
+  local calls
+  calls=$(grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $3); print $3 }')
+  echo "${calls:-0}"
+}

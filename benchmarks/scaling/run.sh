@@ -61,9 +61,14 @@ run() { # name ranks mesh[+refinements] degree inverse [threads]
   dofs=$(value n_dofs "$s")
   rss=$(awk '{ kb += $1 } END { printf "%d", kb / 1024 }' "$dir.rss")
   seconds=$(value wall_seconds "$s")
+  # Newton steps: the forward solves', plus the direct inverse's if it ran.
+  local newton direct
+  newton=$(value newton_iterations "$s")
+  direct=$(value direct_inverse_newton_steps "$s")
+  [ -n "$direct" ] && newton="$newton + $direct direct"
   echo "$1,$ranks,$dofs,$seconds,$(value newton_iterations "$s"),$(value linear_iterations_per_newton_step "$s"),$rss,$(timer_share Assembly "$dir.log"),$(timer_share 'Linear solve' "$dir.log"),$(timer_share 'Contact search' "$dir.log")" >>"$out/scaling.csv"
   printf '| %s | %s | %s | %.1f | %.2g | %s | %s | %s | %s | %s / %s / %s |\n' "$1" "$ranks" "$dofs" "$seconds" \
-    "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$(value newton_iterations "$s")" \
+    "$(awk -v t="$seconds" -v n="$dofs" 'BEGIN { print 1e6 * t / n }')" "$newton" \
     "$(if [ "$5" = true ]; then echo -; else printf '%.1f' "$(value linear_iterations_per_newton_step "$s")"; fi)" "$rss" \
     "$(value inverse_iterations "$s")" "$(timer_share Assembly "$dir.log")" "$(timer_share 'Linear solve' "$dir.log")" \
     "$(timer_share 'Contact search' "$dir.log")"
