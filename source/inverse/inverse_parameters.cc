@@ -63,10 +63,11 @@ namespace RestShape
       "each Jacobian product is one residual assembly, preconditioned by "
       "the forward tangent; contact is not part of it), then the fixed "
       "point from that rest shape, which checks it with a forward solve "
-      "(with contact) and polishes it where needed. Not used where the "
-      "image crosses the obstacle (contact acts at the target); when its "
-      "Newton fails (large rotations) the fixed point starts from the "
-      "target. fixed point: only the rest-shape iteration of Sellier and "
+      "(with contact) and polishes it where needed. Where the image "
+      "crosses the obstacle it solves for the image without contact and "
+      "the fixed point takes its rest shape to the admissible target (the "
+      "rest shape nearest to needing no obstacle force); when its Newton "
+      "fails (large rotations) the fixed point starts from the target. fixed point: only the rest-shape iteration of Sellier and "
       "Morin et al. from the target (with Acceleration).");
     prm.declare_entry("Anderson depth",
                       "5",

@@ -136,6 +136,16 @@ namespace RestShape
   bool
   InverseProblem::converged(const std::pair<double, double> &errors) const
   {
+    // An equilibrium with nodes beyond the obstacle (free since its solve
+    // started with them there) does not meet the contact conditions: not
+    // a rest shape, however small the error.
+    if (contact != nullptr && contact->n_outside() > 0)
+      {
+        pcout << "  " << contact->n_outside()
+              << " contact nodes lie beyond the obstacle: not converged"
+              << std::endl;
+        return false;
+      }
     return measure(errors) <= parameters.tolerance &&
            errors.second <= parameters.max_tolerance;
   }
@@ -329,15 +339,13 @@ namespace RestShape
                                  VectorType       &rest)
   {
     // Where the image crosses the obstacle, contact acts at the target,
-    // which the direct inverse does not model.
+    // which the direct inverse does not model: it then solves for the
+    // image without contact, and the fixed point takes its rest shape on
+    // to the admissible target.
     if (target_shift.linfty_norm() > 0)
-      {
-        pcout << "  Direct inverse: not used, the image crosses the obstacle "
-                 "(contact acts at the target); the fixed point starts from "
-                 "the admissible target"
-              << std::endl;
-        return false;
-      }
+      pcout << "  Direct inverse: at the image, without contact (the fixed "
+               "point then aims at the admissible target)"
+            << std::endl;
     rest = forward.owned_copy(initial_rest);
     if (contact != nullptr)
       contact->reset(); // contact is not part of the direct inverse
