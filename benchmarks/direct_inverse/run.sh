@@ -1,8 +1,8 @@
 #!/bin/bash
-# Benchmark: the direct inverse (Inverse problem/Method = direct: Newton on
-# the equilibrium at the target with the rest shape as unknown, then the
-# fixed point's check) against the fixed point (Anderson, consistent
-# tangent: the defaults), on the inverse column (P2, closed-form rest
+# Benchmark: the direct inverse (Inverse problem/Method = direct, the
+# default: Newton on the equilibrium at the target with the rest shape as
+# unknown, then the fixed point's check) against the fixed point (Anderson,
+# consistent tangent), on the inverse column (P2, closed-form rest
 # shape), the cantilever (large rotations), prm/brain.prm and
 # prm/brain_skull_contact.prm (0.5 mm skull, no support), in one run.
 # Prints a markdown table: converged, rest-shape updates, forward solves,
