@@ -438,13 +438,8 @@ namespace RestShape
     while (steps.done < 1)
       {
         const double s = steps.next();
-        current_load.acceleration =
-          start_load.acceleration +
-          s * (target_load.acceleration - start_load.acceleration);
-        current_load.pressure =
-          start_load.pressure +
-          s * (target_load.pressure - start_load.pressure);
-        w = w_start;
+        current_load   = between(start_load, target_load, s);
+        w              = w_start;
         w.sadd(1 - s, s, rest);
         w_ghost = w;
         if (s < 1 || steps.increment < 1)
@@ -466,13 +461,8 @@ namespace RestShape
           contact->set_state(contact_converged);
         if (++halvings > parameters.solver.max_load_step_halvings)
           {
-            current_load.acceleration =
-              start_load.acceleration +
-              steps.done * (target_load.acceleration - start_load.acceleration);
-            current_load.pressure =
-              start_load.pressure +
-              steps.done * (target_load.pressure - start_load.pressure);
-            w = w_start;
+            current_load = between(start_load, target_load, steps.done);
+            w            = w_start;
             w.sadd(1 - steps.done, steps.done, rest);
             w_ghost = w;
             stats.failure += "; gave up after " + std::to_string(halvings - 1) +

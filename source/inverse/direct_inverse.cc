@@ -37,12 +37,6 @@ namespace RestShape
     /// Line search: halvings, and the decrease it asks for (Armijo).
     constexpr unsigned int max_halvings = 10;
     constexpr double       armijo       = 1e-4;
-
-    LoadState
-    scaled(const LoadState &load, const double s)
-    {
-      return LoadState{s * load.acceleration, s * load.pressure};
-    }
   } // namespace
 
   /// J v = (R(w + e v) - R(w)) / e, one residual assembly.
@@ -120,7 +114,7 @@ namespace RestShape
       {
         const double s   = std::min(1., done + increment);
         VectorType   w   = rest;
-        load             = scaled(scene_load, s);
+        load             = between(LoadState(), scene_load, s);
         const bool final = (s == 1);
         if (newton(w, final ? newton_tolerance : step_tolerance, s))
           {

@@ -18,6 +18,16 @@ namespace RestShape
     dealii::Tensor<1, 3> acceleration;
     double               pressure = 0;
   };
+
+  /// The load at fraction @p s of the way from @p start to @p end
+  /// (load stepping: s = 0 gives start, s = 1 end).
+  inline LoadState
+  between(const LoadState &start, const LoadState &end, const double s)
+  {
+    return LoadState{start.acceleration +
+                       s * (end.acceleration - start.acceleration),
+                     start.pressure + s * (end.pressure - start.pressure)};
+  }
 } // namespace RestShape
 
 #endif
