@@ -347,7 +347,7 @@ namespace RestShape
     summary.set("inverse_iterations", long(inverse_result.iterations));
     summary.set("forward_solves", long(inverse_result.forward_solves));
     summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
-    if (inverse_result.direct.used)
+    if (parameters.inverse.method == InverseParameters::Method::direct)
       {
         summary.set("direct_inverse_converged",
                     inverse_result.direct.converged);

@@ -123,7 +123,6 @@ namespace RestShape
           throw SolverFailure("MUMPS: symbolic factorisation failed");
         factored_matrix = &matrix;
       }
-    last_matrix      = &A;
     const int status = direct_solver->NumericFactorization();
     if (status != 0)
       throw SolverFailure("the direct solver (MUMPS) could not factorise the "

@@ -92,12 +92,10 @@ namespace RestShape
   }
 
   DirectInverseResult
-  DirectInverse::solve(const LoadState  &scene_load,
-                       const VectorType &target_shift,
-                       VectorType       &rest)
+  DirectInverse::solve(const LoadState &scene_load, VectorType &rest)
   {
     result       = DirectInverseResult();
-    d            = forward.owned_copy(target_shift);
+    d            = forward.zero_vector();
     load         = scene_load;
     VectorType r = forward.zero_vector();
     if (!residual(rest, r))

@@ -351,9 +351,7 @@ namespace RestShape
       contact->reset(); // contact is not part of the direct inverse
     {
       TimerOutput::Scope scope(timer, "Direct inverse");
-      result.direct =
-        DirectInverse(forward, pcout).solve(load, forward.zero_vector(), rest);
-      result.direct.used = true;
+      result.direct = DirectInverse(forward, pcout).solve(load, rest);
     }
     const DirectInverseResult &r = result.direct;
     pcout << "  Direct inverse: "

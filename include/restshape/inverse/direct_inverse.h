@@ -14,7 +14,6 @@ namespace RestShape
   /// What the direct inverse did.
   struct DirectInverseResult
   {
-    bool         used      = false; // ran (not where the image crosses)
     bool         converged = false;
     std::string  failure;               // why not
     unsigned int newton_steps      = 0; // accepted Newton steps
@@ -25,9 +24,8 @@ namespace RestShape
 
   /**
    * Find the rest displacement w = X_rest - X (X: the mesh, which is the
-   * target) for which the target, displaced by @p target_shift (the
-   * admissible target; zero without contact), is in equilibrium under
-   * @p load: R(d = target_shift; w) = 0, R the forward residual (external
+   * target) for which the target is in equilibrium under @p load:
+   * R(d = 0; w) = 0, R the forward residual (external
    * minus internal forces, with every load, support and constraint of the
    * forward problem; contact is not part of it). Newton's method in w,
    * Jacobian-free: the product with dR/dw is a finite difference of two
@@ -48,9 +46,7 @@ namespace RestShape
     /// Start from @p rest (owned) and leave the result there; the forward
     /// problem is left in the state of the last residual assembly.
     DirectInverseResult
-    solve(const LoadState  &load,
-          const VectorType &target_shift,
-          VectorType       &rest);
+    solve(const LoadState &load, VectorType &rest);
 
   private:
     struct Jacobian;
@@ -75,7 +71,7 @@ namespace RestShape
     ForwardProblem             &forward;
     dealii::ConditionalOStream &pcout;
     LoadState                   load;
-    VectorType                  d;
+    VectorType                  d; // the displacement at the target: zero
     double                      reference = 1; // |R| at the start, full load
     DirectInverseResult         result;
   };

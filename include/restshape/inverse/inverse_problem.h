@@ -135,8 +135,9 @@ namespace RestShape
                 InverseResult    &result,
                 VectorType       &start);
     /// Method = direct: the direct inverse from @p initial_rest into
-    /// @p rest (its figures in @p result.direct); whether it converged (it
-    /// is not used where the image crosses the obstacle).
+    /// @p rest (its figures in @p result.direct), for the image without
+    /// contact even where the image crosses the obstacle; whether it
+    /// converged.
     bool
     direct_inverse(const VectorType &initial_rest,
                    const LoadState  &load,
