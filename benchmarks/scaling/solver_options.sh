@@ -3,17 +3,18 @@
 # on the brain forward solve of prm/brain.prm without VTU:
 #   fixed    the fixed linear tolerance (1e-8 relative in every Newton step)
 #            and a new AMG preconditioner in every Newton step (the default
-#            until 2026-11-23; now inexact+lagged)
+#            until 2026-11-23; now inexact+lagged+plain)
 #   inexact  Solver/Inexact Newton = true (Eisenstat-Walker tolerances)
 #   reuse    Solver/AMG update = reuse aggregates (the aggregates of the
 #            first step kept, the rest of the AMG recomputed)
 #   lagged   Solver/AMG update = lagged (an earlier step's AMG until CG
 #            slows down)
 #   aggX     Solver/AMG aggregation threshold = X (default 0), e.g. agg0.02
+#   plain    Solver/AMG prolongator = plain (unsmoothed aggregation)
 #   and combinations joined by '+', e.g. inexact+lagged
 # Reports wall time, Newton steps, CG iterations (total and per step), the
 # seconds of the linear solves and of the AMG set-up within them
-# (TimerOutput), and the largest and mean
+# (TimerOutput), the peak memory (max RSS, GNU time), and the largest and mean
 # displacement, which must agree with the first variant's to 1e-6 (all
 # converge to the Newton tolerance; with contact nodes on fixed planes, to
 # their distance off the obstacle). Time ratios are against the first
@@ -26,14 +27,15 @@
 # Environment: RESTSHAPE (build/restshape), OUT
 # (output/benchmarks/solver_options), CASES (default "coarse medium
 # medium+1": meshes of meshes/brain.sh, +N refined N times globally),
-# VARIANTS (default "fixed inexact reuse lagged inexact+lagged"), SET (one extra
+# VARIANTS (default "fixed inexact reuse lagged inexact+lagged
+# inexact+lagged+plain"), SET (one extra
 # 'Section/Parameter=value', e.g. 'Contact/Obstacle file=').
 set -u
 exe=${RESTSHAPE:-build/restshape}
 build=$(dirname "$exe")
 out=${OUT:-output/benchmarks/solver_options}
 cases=${CASES:-coarse medium medium+1}
-variants=${VARIANTS:-fixed inexact reuse lagged inexact+lagged}
+variants=${VARIANTS:-fixed inexact reuse lagged inexact+lagged inexact+lagged+plain}
 [ "${1:-}" = --coarse ] && cases=coarse
 mkdir -p "$out/meshes"
 source "$(dirname "$0")/../common.sh"
@@ -46,8 +48,8 @@ mesh_file() {
     echo "$out/meshes/brain_$1.msh"
   fi
 }
-options() { # variant -> "inexact threshold amg_update"
-  local inexact=false update=rebuild threshold=0 part
+options() { # variant -> "inexact threshold prolongator amg_update"
+  local inexact=false update=rebuild threshold=0 prolongator=smoothed part
   for part in ${1//+/ }; do
     case $part in
       fixed) ;;
@@ -55,15 +57,16 @@ options() { # variant -> "inexact threshold amg_update"
       reuse) update="reuse aggregates" ;;
       lagged) update=lagged ;;
       agg*) threshold=${part#agg} ;;
-      *) echo "unknown variant part '$part' (expected fixed, inexact, reuse, lagged or aggX)" >&2; return 1 ;;
+      plain) prolongator=plain ;;
+      *) echo "unknown variant part '$part' (expected fixed, inexact, reuse, lagged, plain or aggX)" >&2; return 1 ;;
     esac
   done
-  echo "$inexact $threshold $update"
+  echo "$inexact $threshold $prolongator $update"
 }
 echo "machine: $(machine)"
 echo
-echo "| mesh | DoFs | variant | seconds | Newton steps | CG iterations | CG per step | linear solve / AMG set-up (s) | max / mean displacement (mm) | time / first | linear solve / first |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| mesh | DoFs | variant | seconds | Newton steps | CG iterations | CG per step | linear solve / AMG set-up (s) | peak memory (MB) | max / mean displacement (mm) | time / first | linear solve / first |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 status=0
 for c in $cases; do
   level=${c%+*}
@@ -75,13 +78,14 @@ for c in $cases; do
   first_max=""
   for variant in $variants; do
     opts=$(options "$variant") || exit 1
-    read -r inexact threshold update <<<"$opts"
+    read -r inexact threshold prolongator update <<<"$opts"
     dir=$out/${c}_$variant
     rm -rf "$dir"
-    if ! "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" --set "Mesh/Global refinements=$refinements" \
+    if ! /usr/bin/time -f %M -o "$dir.rss" "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" --set "Mesh/Global refinements=$refinements" \
       --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
       --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" --set "Solver/Inexact Newton=$inexact" \
-      --set "Solver/AMG update=$update" --set "Solver/AMG aggregation threshold=$threshold" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
+      --set "Solver/AMG update=$update" --set "Solver/AMG aggregation threshold=$threshold" \
+      --set "Solver/AMG prolongator=$prolongator" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then
       echo "| $c | failed ($variant): $(tail -n 1 "$dir.log") |"
       status=1
       continue
@@ -95,9 +99,9 @@ for c in $cases; do
     planes=$(value fixed_plane_distance_mm "$s")
     planes=${planes:-0}
     [ -z "$first_seconds" ] && { first_seconds=$seconds; first_linear=$linear; first_max=$max; first_planes=$planes; }
-    printf '| %s | %s | %s | %.2f | %s | %.0f | %.1f | %s / %s | %.6f / %.6f | %.2f | %.2f |\n' "$c" "$(value n_dofs "$s")" \
+    printf '| %s | %s | %s | %.2f | %s | %.0f | %.1f | %s / %s | %d | %.6f / %.6f | %.2f | %.2f |\n' "$c" "$(value n_dofs "$s")" \
       "$variant" "$seconds" "$newton" "$(awk -v a="$per_step" -v b="$newton" 'BEGIN { print a * b }')" "$per_step" \
-      "$linear" "$(timer_seconds 'AMG set-up' "$dir.log")" "$max" "$(value mean_displacement_mm "$s")" \
+      "$linear" "$(timer_seconds 'AMG set-up' "$dir.log")" "$(($(cat "$dir.rss") / 1024))" "$max" "$(value mean_displacement_mm "$s")" \
       "$(awk -v a="$seconds" -v b="$first_seconds" 'BEGIN { print a / b }')" \
       "$(awk -v a="$linear" -v b="$first_linear" 'BEGIN { print a / b }')"
     # All converged to the Newton tolerance: they must agree far below the

@@ -61,6 +61,9 @@ namespace RestShape
         stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
                                              solve_forward(rest, start);
         check_stability_of_equilibrium(stats);
+        // The next solve is on a refined mesh or a prestress comparison:
+        // the error estimator gets the AMG's or factorisation's memory.
+        forward->release_linear_solver();
         postprocess(cycle, stats);
       }
     if (parameters.prestress_comparison.enabled)

@@ -111,6 +111,12 @@ namespace RestShape
   }
 
   void
+  ForwardProblem::release_linear_solver()
+  {
+    linear_solver->release();
+  }
+
+  void
   ForwardProblem::solve_with_tangent(VectorType &x, const VectorType &b)
   {
     linear_solver->solve_prepared(x, b);

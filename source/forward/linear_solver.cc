@@ -18,6 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
 
 namespace RestShape
 {
@@ -150,6 +153,26 @@ namespace RestShape
   }
 
   void
+  LinearSolver::release()
+  {
+    direct_solver.reset();
+    direct_problem.reset();
+    factored_matrix = nullptr;
+    last_matrix     = nullptr;
+    amg.reset(); // before its null space
+    null_space.reset();
+    amg_matrix                = nullptr;
+    amg_iterations_per_decade = 0;
+    amg_stale                 = false;
+#ifdef __GLIBC__
+    // The freed pages go back to the system: the threads of the next work
+    // (the error estimator) allocate from their own arenas and would not
+    // reuse them.
+    malloc_trim(0);
+#endif
+  }
+
+  void
   LinearSolver::solve_prepared(VectorType &x, const VectorType &b)
   {
     AssertThrow(last_matrix != nullptr,
@@ -201,6 +224,11 @@ namespace RestShape
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;
     data.set_parameters(list, unused, A.trilinos_matrix());
+
+    // ML's name for the prolongator smoothing: 4/3 by default, 0 for plain
+    // aggregation.
+    if (!parameters.amg_smoothed_aggregation)
+      list.set("aggregation: damping factor", 0.0);
 
     const Epetra_Map &map = A.trilinos_matrix().DomainMap();
     null_space =

@@ -74,8 +74,7 @@ namespace RestShape
     bounding_diameter = box.get_boundary_points().first.distance(
       box.get_boundary_points().second);
 
-    description = std::move(mesh);
-    create_triangulation();
+    create_triangulation(std::move(mesh));
     for (unsigned int r = 0; r < prm.global_refinements; ++r)
       refine_global();
   }
@@ -152,18 +151,32 @@ namespace RestShape
   }
 
   void
-  LabelledMesh::create_triangulation()
+  LabelledMesh::create_triangulation(MeshDescription &&mesh)
   {
     tria->clear();
-    tria->create_triangulation(description.vertices,
-                               description.cells,
-                               SubCellData());
-    // Coarse cells keep the order of the description (tetrahedra are
-    // rebuilt from it at every refinement; hexahedra refine in the tree).
-    mass_ratios    = description.mass_ratios;
-    vertex_targets = description.targets;
-    if (!is_simplex())
-      description = MeshDescription(); // p4est/deal.II refine hexahedra
+    tria->create_triangulation(mesh.vertices, mesh.cells, SubCellData());
+    // Coarse cells keep the order of the description.
+    mass_ratios    = std::move(mesh.mass_ratios);
+    vertex_targets = std::move(mesh.targets);
+  }
+
+  MeshDescription
+  LabelledMesh::coarse_description() const
+  {
+    MeshDescription mesh;
+    mesh.vertices = tria->get_vertices();
+    mesh.cells.reserve(tria->n_cells(0));
+    for (const auto &cell : tria->cell_iterators_on_level(0))
+      {
+        CellData<3> data(cell->n_vertices());
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          data.vertices[v] = cell->vertex_index(v);
+        data.material_id = cell->material_id();
+        mesh.cells.push_back(std::move(data));
+      }
+    mesh.targets     = vertex_targets;
+    mesh.mass_ratios = mass_ratios;
+    return mesh;
   }
 
   void
@@ -173,8 +186,9 @@ namespace RestShape
       {
         if (before_change)
           before_change();
-        description = refine_tetrahedra(description);
-        create_triangulation();
+        // Tetrahedra are rebuilt from the coarse cells (deal.II 9.4 does
+        // not refine simplices in the tree).
+        create_triangulation(refine_tetrahedra(coarse_description()));
         return;
       }
     tria->set_all_refine_flags();

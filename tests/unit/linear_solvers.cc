@@ -4,11 +4,15 @@
 // Inexact Newton, with the AMG aggregates of the first Newton step reused
 // in the later ones, and with a lagged AMG (the tangent changes a lot
 // between the steps of this large rotation); all with the default AMG
-// aggregation threshold 0 and once with 0.02. Prints Newton and linear
-// iteration counts.
+// aggregation threshold 0 and once with 0.02, with the default plain
+// aggregation and once smoothed. Solved half way, the linear solver's
+// factorisation or AMG released, then solved to the whole load, the
+// equilibrium is the same (the next solve builds them again). Prints Newton
+// and linear iteration counts.
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
+#include <restshape/forward/load_state.h>
 
 #include "test_utilities.h"
 
@@ -22,7 +26,8 @@ namespace
   solve(const std::string &cell_type,
         const std::string &solver,
         const std::string &options,
-        SolveStatistics   &stats)
+        SolveStatistics   &stats,
+        const bool         release_half_way = false)
   {
     Scene s(
       "subsection Mesh\n set File = meshes/cantilever_tet.msh\n set Cell type = " +
@@ -33,9 +38,21 @@ namespace
       "subsection Solver\n set Linear solver = " +
       solver + "\n set Linear solver tolerance = 1e-8\n" + options + "end\n");
     ForwardProblem &f = *s.forward;
-    stats             = f.solve(f.scene_load(), f.zero_vector());
-    VectorType d      = f.zero_vector();
-    d                 = f.displacement();
+    if (release_half_way)
+      {
+        // Half the load, release the solver, then the whole load: the
+        // second solve builds the factorisation or AMG again.
+        const SolveStatistics half =
+          f.solve(between(LoadState(), f.scene_load(), 0.5), f.zero_vector());
+        check_between(cell_type + ", " + solver + ": half load converged",
+                      half.converged,
+                      1,
+                      1);
+        f.release_linear_solver();
+      }
+    stats        = f.solve(f.scene_load(), f.zero_vector());
+    VectorType d = f.zero_vector();
+    d            = f.displacement();
     return d;
   }
 } // namespace
@@ -48,11 +65,14 @@ main(int argc, char **argv)
   for (const std::string cell_type : {"tetrahedra", "hexahedra"})
     {
       SolveStatistics  direct_stats;
-      const VectorType direct = solve(cell_type, "direct", "", direct_stats);
+      const VectorType direct =
+        solve(cell_type, "direct", "", direct_stats, true);
       check_between(cell_type + ": direct converged",
                     direct_stats.converged,
                     1,
                     1);
+      const std::string last = " set Inexact Newton = true\n set AMG update = "
+                               "lagged\n set AMG prolongator = smoothed\n";
       for (const std::string options :
            {" set Inexact Newton = false\n set AMG update = rebuild\n",
             " set Inexact Newton = true\n set AMG update = rebuild\n",
@@ -60,7 +80,9 @@ main(int argc, char **argv)
             " set Inexact Newton = false\n set AMG update = lagged\n",
             " set Inexact Newton = true\n set AMG update = lagged\n",
             " set Inexact Newton = true\n set AMG update = lagged\n"
-            " set AMG aggregation threshold = 0.02\n"})
+            " set AMG aggregation threshold = 0.02\n",
+            " set Inexact Newton = true\n set AMG update = lagged\n"
+            " set AMG prolongator = smoothed\n"})
         {
           const std::string name =
             cell_type + ", cg-amg" +
@@ -69,9 +91,11 @@ main(int argc, char **argv)
             (options.find("lagged") != std::string::npos ? " lagged" : "") +
             (options.find("threshold") != std::string::npos ?
                " aggregation threshold 0.02" :
-               "");
+               "") +
+            (options.find("smoothed") != std::string::npos ? " smoothed" : "");
           SolveStatistics amg_stats;
-          VectorType      amg = solve(cell_type, "cg-amg", options, amg_stats);
+          VectorType      amg =
+            solve(cell_type, "cg-amg", options, amg_stats, options == last);
           std::cout << name << ": Newton iterations "
                     << amg_stats.newton_iterations << " (direct "
                     << direct_stats.newton_iterations << "), "

@@ -139,7 +139,10 @@ namespace RestShape
     bool             inexact_newton;
     AmgUpdate        amg_update;
     /// ML's "aggregation: threshold" (dimensionless, >= 0).
-    double       amg_aggregation_threshold;
+    double amg_aggregation_threshold;
+    /// Smoothed aggregation (ML's default prolongator) or plain
+    /// (unsmoothed) aggregation: a third of the memory, more CG iterations.
+    bool         amg_smoothed_aggregation = false;
     double       tangent_shift; // relative; 0: off
     unsigned int max_load_step_halvings;
     unsigned int initial_load_steps;

@@ -324,6 +324,11 @@ namespace RestShape
     /// Whether solve_with_tangent() solves exactly (the direct solver).
     bool
     tangent_solves_are_exact() const;
+    /// Free the linear solver's factorisation or AMG (the next solve builds
+    /// them again): on large meshes they are the largest part of the memory,
+    /// and the postprocessing (the error estimator) needs memory too.
+    void
+    release_linear_solver();
     /// The constraints of the last Newton step (fixed DoFs, hanging nodes,
     /// active contact).
     const dealii::AffineConstraints<double> &

@@ -91,6 +91,11 @@ namespace RestShape
     bool
     solves_prepared_exactly() const;
 
+    /// Free the factorisation (symbolic too) and the AMG; the next solve or
+    /// prepare() builds them again.
+    void
+    release();
+
     /// The relative tolerance of solve_prepared() with CG + AMG.
     static constexpr double prepared_solve_tolerance = 1e-3;
 

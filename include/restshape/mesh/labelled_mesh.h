@@ -96,8 +96,8 @@ namespace RestShape
     read_rest_shape(const std::string &file) const;
 
     /**
-     * Refine every cell once: tetrahedra by red refinement of the mesh
-     * description (the triangulation is rebuilt: DoFHandlers must be
+     * Refine every cell once: tetrahedra by red refinement of the coarse
+     * cells (the triangulation is rebuilt: DoFHandlers must be
      * re-initialised; children of cell i are cells 8i..8i+7), hexahedra by
      * deal.II. @p before_change, if given, is called once the cells are
      * marked and before the mesh changes (to prepare a StateTransfer).
@@ -120,13 +120,17 @@ namespace RestShape
     const MeshParameters parameters;
 
   private:
+    /// The triangulation of @p mesh (its cells are not kept: tetrahedra
+    /// are described again from the triangulation when refined).
     void
-    create_triangulation();
+    create_triangulation(MeshDescription &&mesh);
+    /// Tetrahedra: the coarse cells, vertices, targets and mass ratios.
+    MeshDescription
+    coarse_description() const;
     /// Hexahedra: smooth the marks, call @p before_change, refine.
     void
     execute_refinement(const std::function<void()> &before_change);
 
-    MeshDescription                           description; // tetrahedra only
     std::unique_ptr<dealii::Triangulation<3>> tria;
     std::map<Label, unsigned int>             counts;
     double                                    bounding_diameter;
