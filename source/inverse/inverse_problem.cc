@@ -301,13 +301,12 @@ namespace RestShape
   {
     // Where the image crosses the obstacle, the first rest shape is the
     // admissible target (else the nodes beyond it start free, on the wrong
-    // side, and may be all that would hold the body).
-    start              = initial_rest;
-    unsigned int n_bad = 0;
-    const bool   from_admissible =
-      guess == nullptr && initial_rest.linfty_norm() == 0 &&
-      target_shift.linfty_norm() > 0 &&
-      forward.rest_shape_is_valid(target_shift, n_bad);
+    // side, and may be all that would hold the body). run() has checked
+    // that it inverts no cell.
+    start                      = initial_rest;
+    const bool from_admissible = guess == nullptr &&
+                                 initial_rest.linfty_norm() == 0 &&
+                                 target_shift.linfty_norm() > 0;
     SolveStatistics stats;
     if (from_admissible)
       {
@@ -425,6 +424,19 @@ namespace RestShape
     history.clear();
     const LoadState load = forward.scene_load();
     set_admissible_target(result);
+    // An equilibrium x at the admissible target has det(dx/dX_mesh) =
+    // det F det(dX_rest/dX_mesh) > 0 for any valid rest shape: a target
+    // that inverts a cell is reached by none.
+    unsigned int n_inverted = 0;
+    std::string  where;
+    if (!forward.rest_shape_is_valid(target_shift, n_inverted, &where))
+      return finish(result,
+                    "no rest shape exists: the admissible target inverts " +
+                      std::to_string(n_inverted) + " cells, e.g. " + where +
+                      " (the obstacle cuts deeper into the image than these "
+                      "cells are thick: projected onto it, their surface "
+                      "nodes pass their inner ones; move the obstacle out "
+                      "or refine the mesh near it)");
     // Method = direct: the fixed point starts from the direct inverse's
     // rest shape, Newton from the target at the full load.
     VectorType        direct_rest, target_guess;
