@@ -139,9 +139,10 @@ namespace RestShape
     // An equilibrium with nodes beyond the obstacle (free since its solve
     // started with them there) does not meet the contact conditions: not
     // a rest shape, however small the error.
-    if (contact != nullptr && contact->n_outside() > 0)
+    const unsigned int outside = contact != nullptr ? contact->n_outside() : 0;
+    if (outside > 0)
       {
-        pcout << "  " << contact->n_outside()
+        pcout << "  " << outside
               << " contact nodes lie beyond the obstacle: not converged"
               << std::endl;
         return false;
@@ -426,10 +427,12 @@ namespace RestShape
     set_admissible_target(result);
     // An equilibrium x at the admissible target has det(dx/dX_mesh) =
     // det F det(dX_rest/dX_mesh) > 0 for any valid rest shape: a target
-    // that inverts a cell is reached by none.
+    // that inverts a cell is reached by none. (Where the image does not
+    // cross the obstacle the target is the mesh itself: nothing to check.)
     unsigned int n_inverted = 0;
     std::string  where;
-    if (!forward.rest_shape_is_valid(target_shift, n_inverted, &where))
+    if (target_shift.linfty_norm() > 0 &&
+        !forward.rest_shape_is_valid(target_shift, n_inverted, &where))
       return finish(result,
                     "no rest shape exists: the admissible target inverts " +
                       std::to_string(n_inverted) + " cells, e.g. " + where +
