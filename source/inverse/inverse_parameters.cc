@@ -67,8 +67,9 @@ namespace RestShape
       "crosses the obstacle it solves for the image without contact and "
       "the fixed point takes its rest shape to the admissible target (the "
       "rest shape nearest to needing no obstacle force); when its Newton "
-      "fails (large rotations) the fixed point starts from the target. fixed point: only the rest-shape iteration of Sellier and "
-      "Morin et al. from the target (with Acceleration).");
+      "fails (large rotations) the fixed point starts from the target. "
+      "fixed point: only the rest-shape iteration of Sellier and Morin et "
+      "al. from the target (with Acceleration).");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(1, 20),
