@@ -6,6 +6,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/contact/contact.h>
 
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -167,8 +168,11 @@ namespace RestShape
   ContactProblem::check_fixed_labels_enclosed(const double depth) const
   {
     // A fixed node beyond the obstacle can never come back: the obstacle
-    // is misplaced (or the wrong side is allowed).
-    const auto &fixed = forward.scene_parameters().boundary.fixed_labels;
+    // is misplaced (or the wrong side is allowed). A node fixed in some
+    // components only comes back if its free ones lead inside: along the
+    // obstacle's normal by at least free_normal_fraction.
+    constexpr double free_normal_fraction = 0.5;
+    const auto      &fixed = forward.scene_parameters().boundary.fixed_labels;
     for (const FixedLabel &f : fixed)
       {
         std::set<unsigned int> all, outside;
@@ -178,10 +182,16 @@ namespace RestShape
             for (const unsigned int v : cell->vertex_indices())
               if (all.insert(cell->vertex_index(v)).second)
                 {
-                  const double gap = obstacle->gap(cell->vertex(v)).gap;
-                  if (gap < -depth)
+                  const Gap g         = obstacle->gap(cell->vertex(v));
+                  double    free_part = 0;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    free_part +=
+                      f.components[c] ? 0. : g.gradient[c] * g.gradient[c];
+                  if (std::sqrt(free_part) >= free_normal_fraction)
+                    continue;
+                  if (g.gap < -depth)
                     outside.insert(cell->vertex_index(v));
-                  worst = std::max(worst, -gap);
+                  worst = std::max(worst, -g.gap);
                 }
         unsigned int   beyond = outside.size(), n = all.size();
         const MPI_Comm comm = communicator();
