@@ -373,6 +373,16 @@ namespace RestShape
                     inverse_result.unreachable_max * 1e3);
         summary.set("unreachable_target_mean_mm",
                     inverse_result.unreachable_mean * 1e3);
+        // Only where the projection inverted cells (TargetRelaxation).
+        const TargetRelaxationResult &relaxed = inverse_result.relaxation;
+        if (relaxed.inverted_before > 0)
+          {
+            summary.set("target_cells_inverted_by_projection",
+                        long(relaxed.inverted_before));
+            summary.set("target_relaxed_nodes", long(relaxed.moved_nodes));
+            summary.set("target_relaxation_max_mm",
+                        relaxed.largest_change * 1e3);
+          }
       }
 
     SolveStatistics stats;

@@ -157,7 +157,23 @@ namespace RestShape
     target_shift = forward.zero_vector();
     if (contact == nullptr)
       return;
-    target_shift     = contact->admissible_target_shift();
+    target_shift = contact->admissible_target_shift();
+    set_unreachable(result);
+    if (result.unreachable_nodes > 0)
+      pcout << "Target: " << result.unreachable_nodes
+            << " contact nodes of the image lie beyond the obstacle (by up to "
+            << mm(result.unreachable_max) << ", mean "
+            << mm(result.unreachable_mean)
+            << "); the iteration aims at the admissible target, those nodes "
+               "projected onto it"
+            << std::endl;
+    if (relax_admissible_target(result))
+      set_unreachable(result);
+  }
+
+  void
+  InverseProblem::set_unreachable(InverseResult &result) const
+  {
     unsigned int n   = 0;
     double       sum = 0, largest = 0;
     for (const Node &node : forward.owned_nodes())
@@ -177,14 +193,27 @@ namespace RestShape
     result.unreachable_max   = Utilities::MPI::max(largest, comm);
     result.unreachable_mean =
       Utilities::MPI::sum(sum, comm) / std::max(1u, result.unreachable_nodes);
-    if (result.unreachable_nodes > 0)
-      pcout << "Target: " << result.unreachable_nodes
-            << " contact nodes of the image lie beyond the obstacle (by up to "
-            << mm(result.unreachable_max) << ", mean "
-            << mm(result.unreachable_mean)
-            << "); the iteration aims at the admissible target, those nodes "
-               "projected onto it"
-            << std::endl;
+  }
+
+  bool
+  InverseProblem::relax_admissible_target(InverseResult &result)
+  {
+    unsigned int n_inverted = 0;
+    if (target_shift.linfty_norm() == 0 ||
+        forward.rest_shape_is_valid(target_shift, n_inverted))
+      return false;
+    const TargetRelaxation       relaxation(forward, contact->surface());
+    const TargetRelaxationResult r = relaxation.relax(target_shift);
+    result.relaxation              = r;
+    pcout << "Target: the projection onto the obstacle inverts "
+          << r.inverted_before << " cells; " << r.moved_nodes
+          << " nodes near them follow their neighbours (" << r.sweeps
+          << " smoothing sweeps, moved by up to " << mm(r.largest_change)
+          << "); " << r.inverted_after << " cells still inverted, "
+          << r.below_threshold
+          << " below det(dx_target/dX) = " << TargetRelaxation::minimum_jacobian
+          << std::endl;
+    return true;
   }
 
   double
@@ -437,9 +466,9 @@ namespace RestShape
                     "no rest shape exists: the admissible target inverts " +
                       std::to_string(n_inverted) + " cells, e.g. " + where +
                       " (the obstacle cuts deeper into the image than these "
-                      "cells are thick: projected onto it, their surface "
-                      "nodes pass their inner ones; move the obstacle out "
-                      "or refine the mesh near it)");
+                      "cells are thick: projected onto it and smoothed, their "
+                      "surface nodes still pass their inner ones; move the "
+                      "obstacle out or refine the mesh near it)");
     // Method = direct: the fixed point starts from the direct inverse's
     // rest shape, Newton from the target at the full load.
     VectorType        direct_rest, target_guess;

@@ -78,6 +78,13 @@ namespace RestShape
     VectorType
     admissible_target_shift() const;
 
+    /// The obstacle's surface.
+    const Obstacle &
+    surface() const
+    {
+      return *obstacle;
+    }
+
     /// A new solve starts from displacement @p d (ghosted).
     void
     begin_solve(const VectorType &d);

@@ -8,6 +8,7 @@
 
 #include <restshape/base/parameters.h>
 #include <restshape/contact/contact.h>
+#include <restshape/contact/target_relaxation.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/inverse/anderson.h>
 #include <restshape/inverse/direct_inverse.h>
@@ -43,10 +44,14 @@ namespace RestShape
     unsigned int partial_updates   = 0;         // plain updates taken in part
     double       mean_error = 0, max_error = 0; // m, admissible target
     double       mean_image_error = 0, max_image_error = 0; // m, the image
-    /// The unreachable part of the target: contact candidates of the image
-    /// beyond the obstacle, and their largest and mean distance to it (m).
+    /// The unreachable part of the target: the nodes the admissible
+    /// target moves off the image (contact candidates beyond the obstacle,
+    /// and the nodes a relaxation moved), and their largest and mean
+    /// distance to the image (m).
     unsigned int unreachable_nodes = 0;
     double       unreachable_max = 0, unreachable_mean = 0;
+    /// Where the projection inverted cells: how the target was relaxed.
+    TargetRelaxationResult relaxation;
     /// The direct inverse before the fixed point (Method = direct).
     DirectInverseResult direct;
   };
@@ -115,6 +120,14 @@ namespace RestShape
     /// with its figures in @p result.
     void
     set_admissible_target(InverseResult &result);
+    /// Where the projection inverts cells, smooth the target there
+    /// (TargetRelaxation); whether it did.
+    bool
+    relax_admissible_target(InverseResult &result);
+    /// The unreachable part's figures in @p result: the nodes the target
+    /// moves off the image, and how far.
+    void
+    set_unreachable(InverseResult &result) const;
     void
     record(const unsigned int     iteration,
            const SolveStatistics &stats,
