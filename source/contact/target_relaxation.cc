@@ -242,23 +242,30 @@ namespace RestShape
     ghosted                     = shift;
     std::tie(result.below_threshold, result.inverted_before) =
       mark_inverted(ghosted, in_set, &result.where);
+    // The set's size over all ranks (nodes shared by ranks counted on
+    // each): every rank takes the same decisions below.
+    const auto set_size = [&]() {
+      return Utilities::MPI::sum(static_cast<unsigned int>(
+                                   std::count(in_set.begin(), in_set.end(), 1)),
+                                 comm);
+    };
     // Sweep until no cell is below the threshold, or until none is
     // inverted and neither the set nor the count of cells below it has
     // changed for a while (a smoothed state the sweeps do not improve).
+    // An empty set (every node of those cells fixed) cannot change.
     unsigned int stalled = 0, inverted = result.inverted_before;
     while (result.below_threshold > 0 && result.sweeps < max_sweeps &&
-           (inverted > 0 || stalled < patience))
+           (inverted > 0 || stalled < patience) && set_size() > 0)
       {
         shift = sweep(ghosted, in_set);
         ++result.sweeps;
         ghosted                 = shift;
-        const auto set_size     = std::count(in_set.begin(), in_set.end(), 1);
+        const auto size_before  = set_size();
         const auto below_before = result.below_threshold;
         std::tie(result.below_threshold, inverted) =
           mark_inverted(ghosted, in_set, &result.where);
         const bool same =
-          below_before == result.below_threshold &&
-          set_size == std::count(in_set.begin(), in_set.end(), 1);
+          below_before == result.below_threshold && size_before == set_size();
         stalled = same ? stalled + 1 : 0;
       }
     result.inverted_after = inverted;
@@ -269,7 +276,7 @@ namespace RestShape
         Tensor<1, 3> change;
         for (unsigned int k = 0; k < 3; ++k)
           change[k] = shift[node.dofs[k]] - projected[node.dofs[k]];
-        if (change.norm() > 0)
+        if (change.norm() > negligible_change)
           ++result.moved_nodes;
         result.largest_change = std::max(result.largest_change, change.norm());
       }

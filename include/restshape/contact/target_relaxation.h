@@ -56,6 +56,9 @@ namespace RestShape
     static constexpr double minimum_jacobian = 0.2;
     /// Limit on the Jacobi sweeps.
     static constexpr unsigned int max_sweeps = 500;
+    /// A node whose shift changed by less (m) is not counted as moved
+    /// (round-off of sums in another order on another number of ranks).
+    static constexpr double negligible_change = 1e-12;
     /// Sweeps without change after which a state without inverted cells
     /// is kept although some cells stay below minimum_jacobian.
     static constexpr unsigned int patience = 20;
