@@ -179,11 +179,8 @@ namespace RestShape
     std::vector<Tensor<1, 3>> shift(vertices.size());
     for (unsigned int v = 0; v < targets.size(); ++v)
       shift[v] = targets[v] - vertices[v];
-    const VectorType field = forward->interpolate_vertex_field(shift);
-    VectorType       ghosted(forward->locally_owned_dofs(),
-                       forward->locally_relevant_dofs(),
-                       comm);
-    ghosted = field;
+    const VectorType ghosted =
+      forward->ghosted_copy(forward->interpolate_vertex_field(shift));
     contact->check_placement(&ghosted);
   }
 

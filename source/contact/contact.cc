@@ -208,10 +208,7 @@ namespace RestShape
         flags[c.node.dofs[0]] =
           (c.active ? 1 : 0) + (c.eligible ? 2 : 0) + 4 * c.dropped;
     flags.compress(VectorOperation::insert);
-    VectorType ghosted(forward.locally_owned_dofs(),
-                       forward.locally_relevant_dofs(),
-                       comm);
-    ghosted = flags;
+    const VectorType ghosted = forward.ghosted_copy(flags);
     for (Candidate &c : candidates)
       if (!c.owned)
         {

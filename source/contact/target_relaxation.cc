@@ -33,16 +33,10 @@ namespace RestShape
         for (const auto dof : nodes[n].dofs)
           node_fixed[n] = node_fixed[n] && forward.is_fixed(dof);
       }
-    const auto         &fe        = forward.fe();
-    const auto         &base      = fe.base_element(0);
-    const ReferenceCell reference = fe.reference_cell();
-    n_vertices                    = reference.n_vertices();
-    for (const Point<3> &p : base.get_unit_support_points())
-      {
-        weight.emplace_back(n_vertices);
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          weight.back()[v] = reference.d_linear_shape_function(p, v);
-      }
+    const auto &fe   = forward.fe();
+    const auto &base = fe.base_element(0);
+    weight           = forward.vertex_weights();
+    n_vertices       = weight.front().size();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : forward.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -60,16 +54,14 @@ namespace RestShape
                                   std::vector<char> &in_set,
                                   std::string       *where) const
   {
-    const auto                      &nodes = forward.relevant_nodes();
-    FEValues<3>                      fe_values(forward.mapping(),
+    const auto  &nodes = forward.relevant_nodes();
+    FEValues<3>  fe_values(forward.mapping(),
                           forward.fe(),
                           forward.quadrature(),
                           update_gradients);
-    std::vector<Tensor<2, 3>>        grad(forward.quadrature().size());
-    const FEValuesExtractors::Vector u(0);
-    VectorType                       marked = writable();
-    unsigned int                     n_bad = 0, n_inverted = 0, c = 0;
-    std::string                      first;
+    VectorType   marked = writable();
+    unsigned int n_bad = 0, n_inverted = 0, c = 0;
+    std::string  first;
     for (const auto &cell : forward.dof_handler().active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -83,14 +75,12 @@ namespace RestShape
             }))
           continue;
         fe_values.reinit(cell);
-        fe_values[u].get_function_gradients(shift, grad);
-        double least = 1;
-        for (const Tensor<2, 3> &g : grad)
-          least = std::min(least, determinant(unit_symmetric_tensor<3>() + g));
+        const double least =
+          ForwardProblem::smallest_jacobian(fe_values, shift);
         if (least >= minimum_jacobian)
           continue;
-        n_inverted += (least <= 0);
-        if (n_bad++ == 0)
+        ++n_bad;
+        if (least <= 0 && n_inverted++ == 0)
           first = cell_location_text(cell->material_id(), cell->center());
         // Vertices join once the cell's other nodes are in the set.
         const bool others_in =
@@ -102,10 +92,7 @@ namespace RestShape
             marked[nodes[mine[b]].dofs[0]] += 1.;
       }
     marked.compress(VectorOperation::add);
-    VectorType ghosted(forward.locally_owned_dofs(),
-                       forward.locally_relevant_dofs(),
-                       forward.mesh().triangulation().get_communicator());
-    ghosted = marked;
+    const VectorType ghosted = forward.ghosted_copy(marked);
     for (unsigned int n = 0; n < nodes.size(); ++n)
       in_set[n] = in_set[n] || ghosted[nodes[n].dofs[0]] > 0;
     const MPI_Comm comm = forward.mesh().triangulation().get_communicator();
@@ -235,11 +222,8 @@ namespace RestShape
     const auto            &nodes = forward.relevant_nodes();
     const MPI_Comm    comm = forward.mesh().triangulation().get_communicator();
     std::vector<char> in_set(nodes.size(), 0);
-    VectorType        ghosted(forward.locally_owned_dofs(),
-                       forward.locally_relevant_dofs(),
-                       comm);
     const VectorType  projected = forward.owned_copy(shift);
-    ghosted                     = shift;
+    VectorType        ghosted   = forward.ghosted_copy(shift);
     std::tie(result.below_threshold, result.inverted_before) =
       mark_inverted(ghosted, in_set, &result.where);
     // The set's size over all ranks (nodes shared by ranks counted on
@@ -268,20 +252,17 @@ namespace RestShape
           below_before == result.below_threshold && size_before == set_size();
         stalled = same ? stalled + 1 : 0;
       }
-    result.inverted_after = inverted;
-    // Hanging nodes follow their parents; fixed DoFs stay.
+    // Hanging nodes follow their parents; fixed DoFs stay. The counts
+    // then describe the target the inverse iteration aims at.
     forward.base_constraints().distribute(shift);
-    for (const Node &node : forward.owned_nodes())
-      {
-        Tensor<1, 3> change;
-        for (unsigned int k = 0; k < 3; ++k)
-          change[k] = shift[node.dofs[k]] - projected[node.dofs[k]];
-        if (change.norm() > negligible_change)
-          ++result.moved_nodes;
-        result.largest_change = std::max(result.largest_change, change.norm());
-      }
-    result.moved_nodes    = Utilities::MPI::sum(result.moved_nodes, comm);
-    result.largest_change = Utilities::MPI::max(result.largest_change, comm);
+    ghosted = shift;
+    std::tie(result.below_threshold, result.inverted_after) =
+      mark_inverted(ghosted, in_set, &result.where);
+    VectorType change = forward.owned_copy(shift);
+    change -= projected;
+    const auto moved   = forward.nodal_norms_above(change, negligible_change);
+    result.moved_nodes = moved.n;
+    result.largest_change = moved.max;
     return result;
   }
 } // namespace RestShape

@@ -17,6 +17,7 @@
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 
+#include <cmath>
 #include <limits>
 
 namespace RestShape
@@ -473,12 +474,50 @@ namespace RestShape
   }
 
   VectorType
+  ForwardProblem::ghosted_copy(const VectorType &v) const
+  {
+    VectorType copy(owned_dofs, relevant_dofs, comm);
+    copy = v;
+    return copy;
+  }
+
+  std::vector<std::vector<double>>
+  ForwardProblem::vertex_weights() const
+  {
+    const auto linear = scalar_element(labelled_mesh.is_simplex(), 1);
+    std::vector<std::vector<double>> weights;
+    for (const Point<3> &p : fe_.base_element(0).get_unit_support_points())
+      {
+        weights.emplace_back(linear->n_dofs_per_cell());
+        for (unsigned int v = 0; v < weights.back().size(); ++v)
+          weights.back()[v] = linear->shape_value(v, p);
+      }
+    return weights;
+  }
+
+  double
+  ForwardProblem::smallest_jacobian(const FEValues<3> &fe_values,
+                                    const VectorType  &w)
+  {
+    std::vector<Tensor2> grad_w(fe_values.n_quadrature_points);
+    fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(w, grad_w);
+    double least = std::numeric_limits<double>::max();
+    for (const Tensor2 &g : grad_w)
+      {
+        const double d = determinant(Tensor2(unit_symmetric_tensor<3>()) + g);
+        if (std::isnan(d))
+          return d;
+        least = std::min(least, d);
+      }
+    return least;
+  }
+
+  VectorType
   ForwardProblem::interpolate_vertex_field(
     const std::vector<Tensor<1, 3>> &values) const
   {
-    VectorType  result  = zero_vector();
-    const auto  linear  = scalar_element(labelled_mesh.is_simplex(), 1);
-    const auto &support = fe_.base_element(0).get_unit_support_points();
+    VectorType                           result  = zero_vector();
+    const auto                           weights = vertex_weights();
     std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -491,8 +530,8 @@ namespace RestShape
               const auto [component, base] = fe_.system_to_component_index(i);
               double value                 = 0;
               for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-                value += linear->shape_value(v, support[base]) *
-                         values[cell->vertex_index(v)][component];
+                value +=
+                  weights[base][v] * values[cell->vertex_index(v)][component];
               result[dofs[i]] = value;
             }
         }
@@ -505,26 +544,16 @@ namespace RestShape
                                       unsigned int     &n_bad,
                                       std::string      *where) const
   {
-    VectorType ghosted(owned_dofs, relevant_dofs, comm);
-    ghosted = rest;
+    const VectorType ghosted = ghosted_copy(rest);
     FEValues<3> fe_values(*mapping_, fe_, cell_quadrature, update_gradients);
-    std::vector<Tensor2>             grad_w(cell_quadrature.size());
-    const FEValuesExtractors::Vector u(0);
     n_bad = 0;
     std::string first;
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[u].get_function_gradients(ghosted, grad_w);
-          for (const Tensor2 &g : grad_w)
-            if (!(determinant(Tensor2(unit_symmetric_tensor<3>()) + g) > 0))
-              {
-                if (n_bad++ == 0)
-                  first =
-                    cell_location_text(cell->material_id(), cell->center());
-                break;
-              }
+          if (!(smallest_jacobian(fe_values, ghosted) > 0) && n_bad++ == 0)
+            first = cell_location_text(cell->material_id(), cell->center());
         }
     n_bad = Utilities::MPI::sum(n_bad, comm);
     if (where != nullptr && n_bad > 0)

@@ -12,17 +12,33 @@ namespace RestShape
   std::pair<double, double>
   ForwardProblem::nodal_norms(const VectorType &v) const
   {
-    double sum = 0, max = 0;
+    const NodalNorms all = nodal_norms_above(v, -1.);
+    return {all.mean, all.max};
+  }
+
+  ForwardProblem::NodalNorms
+  ForwardProblem::nodal_norms_above(const VectorType &v,
+                                    const double      threshold) const
+  {
+    double       sum = 0, max = 0;
+    unsigned int n = 0;
     for (const Node &node : owned_nodes_)
       {
         Tensor<1, 3> value;
         for (unsigned int c = 0; c < 3; ++c)
           value[c] = v[node.dofs[c]];
-        sum += value.norm();
+        if (value.norm() > threshold)
+          {
+            ++n;
+            sum += value.norm();
+          }
         max = std::max(max, value.norm());
       }
-    const double n = Utilities::MPI::sum(double(owned_nodes_.size()), comm);
-    return {Utilities::MPI::sum(sum, comm) / n, Utilities::MPI::max(max, comm)};
+    NodalNorms result;
+    result.n    = Utilities::MPI::sum(n, comm);
+    result.mean = Utilities::MPI::sum(sum, comm) / std::max(1u, result.n);
+    result.max  = Utilities::MPI::max(max, comm);
+    return result;
   }
 
   std::pair<double, double>

@@ -174,25 +174,10 @@ namespace RestShape
   void
   InverseProblem::set_unreachable(InverseResult &result) const
   {
-    unsigned int n   = 0;
-    double       sum = 0, largest = 0;
-    for (const Node &node : forward.owned_nodes())
-      {
-        Tensor<1, 3> s;
-        for (unsigned int c = 0; c < 3; ++c)
-          s[c] = target_shift[node.dofs[c]];
-        if (s.norm() > 0)
-          {
-            ++n;
-            sum += s.norm();
-            largest = std::max(largest, s.norm());
-          }
-      }
-    const MPI_Comm comm = forward.mesh().triangulation().get_communicator();
-    result.unreachable_nodes = Utilities::MPI::sum(n, comm);
-    result.unreachable_max   = Utilities::MPI::max(largest, comm);
-    result.unreachable_mean =
-      Utilities::MPI::sum(sum, comm) / std::max(1u, result.unreachable_nodes);
+    const auto unreachable   = forward.nodal_norms_above(target_shift, 0.);
+    result.unreachable_nodes = unreachable.n;
+    result.unreachable_max   = unreachable.max;
+    result.unreachable_mean  = unreachable.mean;
   }
 
   bool
@@ -456,15 +441,14 @@ namespace RestShape
     set_admissible_target(result);
     // An equilibrium x at the admissible target has det(dx/dX_mesh) =
     // det F det(dX_rest/dX_mesh) > 0 for any valid rest shape: a target
-    // that inverts a cell is reached by none. (Where the image does not
-    // cross the obstacle the target is the mesh itself: nothing to check.)
-    unsigned int n_inverted = 0;
-    std::string  where;
-    if (target_shift.linfty_norm() > 0 &&
-        !forward.rest_shape_is_valid(target_shift, n_inverted, &where))
+    // that inverts a cell is reached by none. (The target was checked, and
+    // relaxed where the projection inverted cells, by set_admissible_target.)
+    const TargetRelaxationResult &relaxed = result.relaxation;
+    if (relaxed.inverted_after > 0)
       return finish(result,
                     "no rest shape exists: the admissible target inverts " +
-                      std::to_string(n_inverted) + " cells, e.g. " + where +
+                      std::to_string(relaxed.inverted_after) + " cells, e.g. " +
+                      relaxed.where +
                       " (the obstacle cuts deeper into the image than these "
                       "cells are thick: projected onto it and smoothed, their "
                       "surface nodes still pass their inner ones; move the "

@@ -173,15 +173,9 @@ namespace RestShape
                  const VectorType                     &u,
                  const RefinementParameters::Estimator estimator)
   {
-    const auto &dof_handler = problem.dof_handler();
-    const auto &tria        = dof_handler.get_triangulation();
-    const auto  comm        = tria.get_communicator();
-    VectorType  ghosted(problem.locally_owned_dofs(),
-                       problem.locally_relevant_dofs(),
-                       comm);
-    VectorType  owned(problem.locally_owned_dofs(), comm);
-    owned   = u;
-    ghosted = owned;
+    const auto      &dof_handler = problem.dof_handler();
+    const auto      &tria        = dof_handler.get_triangulation();
+    const VectorType ghosted     = problem.ghosted_copy(problem.owned_copy(u));
 
     const unsigned int  q               = problem.fe().degree + 1;
     const Quadrature<2> face_quadrature = problem.mesh().is_simplex() ?

@@ -75,14 +75,9 @@ namespace RestShape
   ExactDisplacement::errors(const ForwardProblem &problem,
                             const VectorType     &field) const
   {
-    const auto &dof_handler = problem.dof_handler();
-    const auto  comm = dof_handler.get_triangulation().get_communicator();
-    VectorType  u_owned(problem.locally_owned_dofs(), comm);
-    u_owned = field;
-    VectorType u(problem.locally_owned_dofs(),
-                 problem.locally_relevant_dofs(),
-                 comm);
-    u = u_owned;
+    const auto      &dof_handler = problem.dof_handler();
+    const auto       comm = dof_handler.get_triangulation().get_communicator();
+    const VectorType u    = problem.ghosted_copy(problem.owned_copy(field));
 
     const unsigned int  degree = problem.fe().degree + 2;
     const Quadrature<3> quadrature =
@@ -99,9 +94,7 @@ namespace RestShape
         problem.mapping(), dof_handler, v, f, cellwise, quadrature, norm);
       return VectorTools::compute_global_error(tria, cellwise, norm);
     };
-    VectorType                 zero(problem.locally_owned_dofs(),
-                    problem.locally_relevant_dofs(),
-                    comm);
+    const VectorType zero = problem.ghosted_copy(problem.zero_vector());
     Functions::ZeroFunction<3> zero_function(3);
 
     DisplacementErrors e;

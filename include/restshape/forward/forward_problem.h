@@ -11,6 +11,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
@@ -168,6 +169,10 @@ namespace RestShape
     /// and compares only vectors of the same layout.
     VectorType
     owned_copy(const VectorType &v) const;
+    /// A ghosted copy of the owned vector @p v (read access to the values
+    /// at the locally relevant DoFs).
+    VectorType
+    ghosted_copy(const VectorType &v) const;
 
     /**
      * A displacement-like field from values at the mesh vertices (indexed
@@ -177,6 +182,17 @@ namespace RestShape
     VectorType
     interpolate_vertex_field(
       const std::vector<dealii::Tensor<1, 3>> &values) const;
+    /// weights[b][v]: the linear (P1/Q1) shape function of the cell's
+    /// vertex v at the support point b of the base element: a node's value
+    /// interpolated linearly from the vertices.
+    std::vector<std::vector<double>>
+    vertex_weights() const;
+
+    /// Smallest det(I + grad w) over the quadrature points of the cell on
+    /// which @p fe_values (gradients) was last reinitialised; @p w ghosted.
+    static double
+    smallest_jacobian(const dealii::FEValues<3> &fe_values,
+                      const VectorType          &w);
 
     /**
      * Check a rest displacement: false (with the number of bad cells) if
@@ -238,6 +254,15 @@ namespace RestShape
     /// a displacement-like field; m).
     std::pair<double, double>
     nodal_norms(const VectorType &v) const;
+    /// Over all ranks: the nodes where |v| > @p threshold (m), the mean of
+    /// |v| over them and the largest |v| (v owned or ghosted).
+    struct NodalNorms
+    {
+      unsigned int n    = 0;
+      double       mean = 0, max = 0;
+    };
+    NodalNorms
+    nodal_norms_above(const VectorType &v, const double threshold) const;
     /// Mean and max over the mesh vertices with a target of the distance
     /// (m) between the current position X + d and @p targets (indexed by
     /// triangulation vertex; vertices beyond its size are skipped).
