@@ -102,6 +102,11 @@ degree=${largest##*:}
 run "forward_${level}_P${degree}_1thread" 1 "$(mesh_spec "$level")" "$degree" false 1 || status=1
 run "forward_${level}_P${degree}_2ranks" 2 "$(mesh_spec "$level")" "$degree" false || status=1
 echo
+# Memory per rank: each rank's peak against the one-rank run's.
+awk -v one="$(awk '{ printf "%d", $1 / 1024 }' "$out/forward_${level}_P${degree}.rss" 2>/dev/null)" \
+  '{ peaks = peaks sep sprintf("%d", $1 / 1024); sep = " and " }
+   END { printf "peak memory per rank on 2 ranks: %s MB (1 rank: %s MB)\n", peaks, one }' \
+  "$out/forward_${level}_P${degree}_2ranks.rss"
 awk -F, -v c="forward_${level}_P${degree}" '$1 == c { t2 = $4 } $1 == c "_1thread" { t1 = $4 } $1 == c "_2ranks" { tr = $4 }
   END { if (t1 > 0 && t2 > 0 && tr > 0)
           printf "speed-up over 1 rank with 1 thread: 1 rank with 2 threads %.2fx, 2 ranks %.2fx\n", t1 / t2, t1 / tr }' "$out/scaling.csv"

@@ -440,20 +440,9 @@ namespace RestShape
               w[cell->vertex_dof_index(v, c)];
     // It remembers its target (the mesh) and the image's masses, so that a
     // forward run from it alone reaches the target with the same mass.
-    RestShapeData rest_data;
-    rest_data.mass_ratios                = forward->image_mass_ratios();
-    const std::vector<Point<3>> &targets = mesh->targets();
-    rest_data.target                     = [&](const unsigned int v) {
-      return targets.empty() ? vertices[v] : targets[v];
-    };
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_gmsh(
-        mesh->triangulation(),
-        [&](unsigned int v) { return rest_positions[v]; },
-        parameters.mesh.length_unit,
-        output->path("rest_shape.msh"),
-        &rest_data,
-        mesh->label_names());
+    mesh->write_gmsh(rest_positions,
+                     output->path("rest_shape.msh"),
+                     forward->image_mass_ratios());
   }
 
   std::string

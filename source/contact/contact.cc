@@ -65,7 +65,7 @@ namespace RestShape
           continue;
         for (const unsigned int f : cell->face_indices())
           {
-            if (!cell->face(f)->at_boundary())
+            if (!forward.mesh().at_surface(*cell, f))
               continue;
             cell->get_dof_indices(dofs);
             fv.reinit(cell, f);

@@ -205,6 +205,9 @@ namespace RestShape
     const auto direct = [&](const unsigned int i) {
       return in_face[i] && integral[i] >= 0.1 * lumped[i];
     };
+    // Owned nodes: their own pressure; with it, whether it is direct, on
+    // the neighbouring ranks (their faces hold only part of it).
+    VectorType shared = forward.zero_vector();
     for (unsigned int i = 0; i < n; ++i)
       if (candidates[i].owned && candidates[i].active)
         {
@@ -213,15 +216,27 @@ namespace RestShape
             pressure[i] = force / integral[i];
           else if (!in_face[i])
             pressure[i] = force / candidates[i].area_lumped;
+          shared[candidates[i].node.dofs[0]] = pressure[i];
+          shared[candidates[i].node.dofs[1]] = direct(i) ? 1 : 0;
         }
+    shared.compress(VectorOperation::insert);
+    const VectorType  ghosted = forward.ghosted_copy(shared);
+    std::vector<bool> is_direct(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto &dofs = candidates[i].node.dofs;
+        is_direct[i] = candidates[i].owned ? direct(i) : ghosted[dofs[1]] > 0;
+        if (!candidates[i].owned)
+          pressure[i] = ghosted[dofs[0]];
+      }
     std::vector<double>       sum(n, 0.);
     std::vector<unsigned int> count(n, 0);
     for (const Face &face : faces)
       for (const unsigned int i : face.nodes)
-        if (in_face[i] && !direct(i) &&
+        if (in_face[i] && !is_direct[i] &&
             face.normal * candidates[i].normal <= -0.5)
           for (const unsigned int j : face.nodes)
-            if (direct(j))
+            if (is_direct[j])
               {
                 sum[i] += pressure[j];
                 ++count[i];

@@ -71,13 +71,13 @@ namespace RestShape
   std::vector<double>
   ForwardProblem::image_mass_ratios() const
   {
-    std::vector<double>  ratios(labelled_mesh.triangulation().n_active_cells(),
-                               0.);
-    FEValues<3>          fe_values(*mapping_,
+    std::vector<double> ratios(
+      labelled_mesh.triangulation().n_global_active_cells(), 0.);
+    FEValues<3>                      fe_values(*mapping_,
                           fe_,
                           cell_quadrature,
                           update_gradients | update_JxW_values);
-    std::vector<Tensor2> grad_w(cell_quadrature.size());
+    std::vector<Tensor2>             grad_w(cell_quadrature.size());
     const FEValuesExtractors::Vector u(0);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -92,7 +92,7 @@ namespace RestShape
                 determinant(Tensor2(unit_symmetric_tensor<3>()) + grad_w[q]) *
                 fe_values.JxW(q);
             }
-          ratios[cell->active_cell_index()] =
+          ratios[labelled_mesh.cell_index(*cell)] =
             labelled_mesh.mass_ratio(*cell) * mesh_volume / rest_volume;
         }
     Utilities::MPI::sum(ratios, comm, ratios);

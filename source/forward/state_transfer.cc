@@ -1,4 +1,3 @@
-#include <deal.II/base/index_set.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/tria_accessor.h>
 
@@ -31,33 +30,24 @@ namespace RestShape
     const auto          &tria = dofs.get_triangulation();
     if (forward.mesh().is_simplex())
       {
-        // Every rank holds the whole (shared) mesh: give it every value.
-        const IndexSet          all = complete_index_set(dofs.n_dofs());
-        std::vector<VectorType> complete(n_fields);
+        std::vector<VectorType> relevant(n_fields);
         for (std::size_t f = 0; f < n_fields; ++f)
-          {
-            complete[f].reinit(forward.locally_owned_dofs(),
-                               all,
-                               tria.get_communicator());
-            // From a named vector: assigning a temporary moves it in,
-            // layout and all, and the ghost values would be lost.
-            const VectorType owned = forward.owned_copy(*fields[f]);
-            complete[f]            = owned;
-          }
+          relevant[f] = forward.ghosted_copy(forward.owned_copy(*fields[f]));
         const unsigned int dofs_per_cell = forward.fe().n_dofs_per_cell();
         std::vector<types::global_dof_index> indices(dofs_per_cell);
-        old_cells.resize(tria.n_active_cells());
+        n_old_cells = tria.n_global_active_cells();
         for (const auto &cell : dofs.active_cell_iterators())
-          {
-            OldCell &old = old_cells[cell->active_cell_index()];
-            for (unsigned int v = 0; v < 4; ++v)
-              old.vertices[v] = cell->vertex(v);
-            cell->get_dof_indices(indices);
-            old.values.reserve(n_fields * dofs_per_cell);
-            for (std::size_t f = 0; f < n_fields; ++f)
-              for (const auto i : indices)
-                old.values.push_back(complete[f][i]);
-          }
+          if (cell->is_locally_owned())
+            {
+              OldCell &old = old_cells[forward.mesh().cell_index(*cell)];
+              for (unsigned int v = 0; v < 4; ++v)
+                old.vertices[v] = cell->vertex(v);
+              cell->get_dof_indices(indices);
+              old.values.reserve(n_fields * dofs_per_cell);
+              for (std::size_t f = 0; f < n_fields; ++f)
+                for (const auto i : indices)
+                  old.values.push_back(relevant[f][i]);
+            }
         return;
       }
 
@@ -91,7 +81,7 @@ namespace RestShape
   StateTransfer::interpolate(const ForwardProblem &forward)
   {
     std::vector<VectorType> out;
-    if (!old_cells.empty())
+    if (forward.mesh().is_simplex())
       out = interpolate_tetrahedra(forward);
     else
       {
@@ -120,8 +110,8 @@ namespace RestShape
     const DoFHandler<3> &dofs          = forward.dof_handler();
     const FESystem<3>   &fe            = forward.fe();
     const unsigned int   dofs_per_cell = fe.n_dofs_per_cell();
-    AssertThrow(dofs.get_triangulation().n_active_cells() ==
-                  8 * old_cells.size(),
+    AssertThrow(dofs.get_triangulation().n_global_active_cells() ==
+                  8 * n_old_cells,
                 ExcMessage("StateTransfer: a tetrahedral mesh must be "
                            "refined once, every cell into eight"));
     const IndexSet                      &owned = forward.locally_owned_dofs();
@@ -134,10 +124,10 @@ namespace RestShape
       {
         if (!cell->is_locally_owned())
           continue;
-        // A cell of a freshly built mesh: its index is its creation order.
-        const OldCell          &parent = old_cells[cell->index() / 8];
-        const auto              J      = jacobian(parent.vertices);
-        const auto              J_inv  = invert(J);
+        const OldCell &parent =
+          old_cells.at(forward.mesh().cell_index(*cell) / 8);
+        const auto              J     = jacobian(parent.vertices);
+        const auto              J_inv = invert(J);
         std::array<Point<3>, 4> vertices;
         for (unsigned int v = 0; v < 4; ++v)
           vertices[v] = cell->vertex(v);

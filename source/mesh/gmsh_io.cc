@@ -125,22 +125,79 @@ namespace RestShape
       out << "$EndElementData\n";
     }
 
-    /// gmsh 2.2 $PhysicalNames of the labels of @p tria that have names.
+    /// One cell to write: its label and vertices in deal.II's order.
+    using CellWriter =
+      std::function<void(Label, const std::vector<unsigned int> &)>;
+    /// Calls its argument once per cell, in the order of the file.
+    using CellVisitor = std::function<void(const CellWriter &)>;
+
+    /// gmsh 2.2 $PhysicalNames of the labels of the cells that have names.
     void
-    write_physical_names(std::ostream           &out,
-                         const Triangulation<3> &tria,
-                         const LabelNames       &names)
+    write_physical_names(std::ostream      &out,
+                         const CellVisitor &cells,
+                         const LabelNames  &names)
     {
       std::set<Label> labels;
-      for (const auto &cell : tria.active_cell_iterators())
-        if (!names.name(cell->material_id()).empty())
-          labels.insert(cell->material_id());
+      cells([&](const Label label, const std::vector<unsigned int> &) {
+        if (!names.name(label).empty())
+          labels.insert(label);
+      });
       if (labels.empty())
         return;
       out << "$PhysicalNames\n" << labels.size() << '\n';
       for (const Label l : labels)
         out << "3 " << l << " \"" << names.name(l) << "\"\n";
       out << "$EndPhysicalNames\n";
+    }
+
+    /// write_gmsh() for the cells that @p cells visits (@p n_vertices
+    /// vertex indices, @p n_cells cells).
+    void
+    write_cells(const CellVisitor                           &cells,
+                const unsigned int                           n_vertices,
+                const unsigned int                           n_cells,
+                const std::function<Point<3>(unsigned int)> &position,
+                const double                                 length_unit,
+                const std::string                           &file,
+                const RestShapeData                         *rest,
+                const LabelNames                            &names)
+    {
+      std::vector<bool> used(n_vertices, false);
+      cells([&](Label, const std::vector<unsigned int> &vertices) {
+        for (const unsigned int v : vertices)
+          used[v] = true;
+      });
+      write_file_atomically(
+        file,
+        [&](std::ostream &out) {
+          out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+          write_physical_names(out, cells, names);
+          out << "$Nodes\n"
+              << std::count(used.begin(), used.end(), true) << '\n'
+              << std::setprecision(16);
+          for (unsigned int v = 0; v < used.size(); ++v)
+            if (used[v])
+              {
+                const Point<3> p = position(v) / length_unit;
+                out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2]
+                    << '\n';
+              }
+          out << "$EndNodes\n$Elements\n" << n_cells << '\n';
+          // gmsh numbers hexahedron vertices counter-clockwise per face.
+          static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+          unsigned int              n            = 0;
+          cells([&](const Label label, const std::vector<unsigned int> &v) {
+            const bool tet = v.size() == 4;
+            out << ++n << (tet ? " 4 2 " : " 5 2 ") << label << ' ' << label;
+            for (unsigned int k = 0; k < v.size(); ++k)
+              out << ' ' << v[tet ? k : hex_order[k]] + 1;
+            out << '\n';
+          });
+          out << "$EndElements\n";
+          if (rest != nullptr)
+            write_rest_shape_data(out, used, *rest, length_unit);
+        },
+        "Output/Directory");
     }
   } // namespace
 
@@ -330,11 +387,9 @@ namespace RestShape
              const double           length_unit,
              const std::string     &file)
   {
-    Triangulation<3> tria;
-    tria.create_triangulation(mesh.vertices, mesh.cells, SubCellData());
     write_gmsh(
-      tria,
-      [&](const unsigned int v) { return tria.get_vertices()[v]; },
+      mesh,
+      [&](const unsigned int v) { return mesh.vertices[v]; },
       length_unit,
       file,
       nullptr,
@@ -349,42 +404,45 @@ namespace RestShape
              const RestShapeData                         *rest,
              const LabelNames                            &names)
   {
-    std::vector<bool> used(tria.n_vertices(), false);
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        used[cell->vertex_index(v)] = true;
+    std::vector<unsigned int> vertices;
+    const CellVisitor         cells = [&](const CellWriter &write) {
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          vertices.resize(cell->n_vertices());
+          for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+            vertices[v] = cell->vertex_index(v);
+          write(cell->material_id(), vertices);
+        }
+    };
+    write_cells(cells,
+                tria.n_vertices(),
+                tria.n_active_cells(),
+                position,
+                length_unit,
+                file,
+                rest,
+                names);
+  }
 
-    write_file_atomically(
-      file,
-      [&](std::ostream &out) {
-        out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
-        write_physical_names(out, tria, names);
-        out << "$Nodes\n"
-            << std::count(used.begin(), used.end(), true) << '\n'
-            << std::setprecision(16);
-        for (unsigned int v = 0; v < used.size(); ++v)
-          if (used[v])
-            {
-              const Point<3> p = position(v) / length_unit;
-              out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-            }
-        out << "$EndNodes\n$Elements\n" << tria.n_active_cells() << '\n';
-        // gmsh numbers hexahedron vertices counter-clockwise per face.
-        static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
-        unsigned int              n            = 0;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            const bool tet = cell->reference_cell().is_simplex();
-            out << ++n << (tet ? " 4 2 " : " 5 2 ") << cell->material_id()
-                << ' ' << cell->material_id();
-            for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-              out << ' ' << cell->vertex_index(tet ? v : hex_order[v]) + 1;
-            out << '\n';
-          }
-        out << "$EndElements\n";
-        if (rest != nullptr)
-          write_rest_shape_data(out, used, *rest, length_unit);
-      },
-      "Output/Directory");
+  void
+  write_gmsh(const MeshDescription                       &mesh,
+             const std::function<Point<3>(unsigned int)> &position,
+             const double                                 length_unit,
+             const std::string                           &file,
+             const RestShapeData                         *rest,
+             const LabelNames                            &names)
+  {
+    const CellVisitor cells = [&](const CellWriter &write) {
+      for (const auto &cell : mesh.cells)
+        write(cell.material_id, cell.vertices);
+    };
+    write_cells(cells,
+                mesh.vertices.size(),
+                mesh.cells.size(),
+                position,
+                length_unit,
+                file,
+                rest,
+                names);
   }
 } // namespace RestShape

@@ -1,10 +1,11 @@
 // LabelledMesh: the scene's triangulation, its labels and refinement.
 #include <deal.II/base/utilities.h>
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/mesh/distributed_tetrahedra.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/mesh/mesh_checks.h>
@@ -62,11 +63,14 @@ namespace RestShape
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
       tria = std::make_unique<Triangulation<3>>();
     else if (simplex)
-      tria = std::make_unique<parallel::shared::Triangulation<3>>(
-        comm,
-        Triangulation<3>::none,
-        false,
-        parallel::shared::Triangulation<3>::partition_metis);
+      {
+        // Each rank holds its cells and their neighbours only; the whole
+        // mesh is kept as a description (whole_mesh).
+        tria =
+          std::make_unique<parallel::fullydistributed::Triangulation<3>>(comm);
+        partition = std::make_unique<CellPartition>(
+          mesh.cells.size(), Utilities::MPI::n_mpi_processes(comm));
+      }
     else
       tria = std::make_unique<parallel::distributed::Triangulation<3>>(comm);
 
@@ -124,10 +128,12 @@ namespace RestShape
     std::vector<Point<3>> positions(tria->n_vertices());
     std::vector<bool>     set(tria->n_vertices(), false);
     const double          tolerance = 1e-9 * bounding_diameter;
-    unsigned int          c         = 0;
+    unsigned int          n         = 0;
     for (const auto &cell : tria->active_cell_iterators())
       {
-        const auto &rest_cell = rest.cells[c++];
+        // The cells of a fully distributed mesh are its rank's part.
+        const std::size_t c         = partition ? cell_index(*cell) : n++;
+        const auto       &rest_cell = rest.cells[c];
         if (rest_cell.vertices.size() != cell->n_vertices())
           throw InputError(file,
                            parameter,
@@ -154,15 +160,36 @@ namespace RestShape
   LabelledMesh::create_triangulation(MeshDescription &&mesh)
   {
     tria->clear();
-    tria->create_triangulation(mesh.vertices, mesh.cells, SubCellData());
-    // Coarse cells keep the order of the description.
-    mass_ratios    = std::move(mesh.mass_ratios);
-    vertex_targets = std::move(mesh.targets);
+    if (!partition)
+      {
+        tria->create_triangulation(mesh.vertices, mesh.cells, SubCellData());
+        // Coarse cells keep the order of the description.
+        mass_ratios    = std::move(mesh.mass_ratios);
+        vertex_targets = std::move(mesh.targets);
+        return;
+      }
+    LocalPart part = local_part(mesh, *partition, tria->get_communicator());
+    dynamic_cast<parallel::fullydistributed::Triangulation<3> &>(*tria)
+      .create_triangulation(part.description);
+    global_vertices = std::move(part.global_vertices);
+    mass_ratios     = mesh.mass_ratios;
+    of_owned_cell.assign(tria->n_vertices(), false);
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          of_owned_cell[cell->vertex_index(v)] = true;
+    vertex_targets.clear();
+    if (!mesh.targets.empty())
+      for (const unsigned int v : global_vertices)
+        vertex_targets.push_back(mesh.targets[v]);
+    whole_mesh = std::move(mesh);
   }
 
   MeshDescription
   LabelledMesh::coarse_description() const
   {
+    if (partition)
+      return whole_mesh;
     MeshDescription mesh;
     mesh.vertices = tria->get_vertices();
     mesh.cells.reserve(tria->n_cells(0));
@@ -187,8 +214,15 @@ namespace RestShape
         if (before_change)
           before_change();
         // Tetrahedra are rebuilt from the coarse cells (deal.II 9.4 does
-        // not refine simplices in the tree).
-        create_triangulation(refine_tetrahedra(coarse_description()));
+        // not refine simplices in the tree); children stay on their
+        // parent's rank.
+        if (partition)
+          {
+            *partition = partition->refined();
+            create_triangulation(refine_tetrahedra(whole_mesh));
+          }
+        else
+          create_triangulation(refine_tetrahedra(coarse_description()));
         return;
       }
     tria->set_all_refine_flags();
@@ -282,13 +316,90 @@ namespace RestShape
   {
     if (mass_ratios.empty())
       return 1;
-    // Tetrahedra: every cell is a coarse cell; hexahedra: the ancestor's.
-    if (cell.level() == 0)
-      return mass_ratios[cell.index()];
-    auto ancestor = cell.parent();
-    while (ancestor->level() > 0)
-      ancestor = ancestor->parent();
-    return mass_ratios[ancestor->index()];
+    // The coarse cell's (its own, or its ancestor's on hexahedra).
+    return mass_ratios[cell.id().get_coarse_cell_id()];
+  }
+
+  bool
+  LabelledMesh::at_surface(const CellAccessor<3, 3> &cell,
+                           const unsigned int        f) const
+  {
+    const auto face = cell.face(f);
+    if (!face->at_boundary())
+      return false;
+    if (!partition || cell.is_locally_owned())
+      return true;
+    // A face of a ghost cell whose neighbour this rank does not hold also
+    // has no neighbour here; it has no vertex of an owned cell (else the
+    // neighbour would share it and be a ghost).
+    for (const unsigned int v : face->vertex_indices())
+      if (of_owned_cell[face->vertex_index(v)])
+        return true;
+    return false;
+  }
+
+  std::size_t
+  LabelledMesh::cell_index(const CellAccessor<3, 3> &cell) const
+  {
+    // Tetrahedra are coarse cells (refined by rebuilding the mesh).
+    if (is_simplex())
+      return cell.id().get_coarse_cell_id();
+    return cell.active_cell_index();
+  }
+
+  void
+  LabelledMesh::write_gmsh(const std::vector<Point<3>> &positions,
+                           const std::string           &file,
+                           const std::vector<double>   &rest_mass_ratios) const
+  {
+    RestShapeData rest;
+    rest.mass_ratios    = rest_mass_ratios;
+    const MPI_Comm comm = tria->get_communicator();
+    if (!partition)
+      {
+        const auto &vertices = tria->get_vertices();
+        rest.target          = [&](const unsigned int v) {
+          return vertex_targets.empty() ? vertices[v] : vertex_targets[v];
+        };
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          RestShape::write_gmsh(
+            *tria,
+            [&](const unsigned int v) { return positions[v]; },
+            parameters.length_unit,
+            file,
+            &rest,
+            names);
+        return;
+      }
+    // Rank 0 gathers the positions of every rank's owned cells.
+    std::vector<double> mine;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            mine.push_back(global_vertices[cell->vertex_index(v)]);
+            for (unsigned int c = 0; c < 3; ++c)
+              mine.push_back(positions[cell->vertex_index(v)][c]);
+          }
+    const auto all = Utilities::MPI::gather(comm, mine, 0);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::vector<Point<3>> whole(whole_mesh.vertices.size());
+    for (const auto &part : all)
+      for (std::size_t i = 0; i < part.size(); i += 4)
+        whole[static_cast<std::size_t>(part[i])] =
+          Point<3>(part[i + 1], part[i + 2], part[i + 3]);
+    rest.target = [&](const unsigned int v) {
+      return whole_mesh.targets.empty() ? whole_mesh.vertices[v] :
+                                          whole_mesh.targets[v];
+    };
+    RestShape::write_gmsh(
+      whole_mesh,
+      [&](const unsigned int v) { return whole[v]; },
+      parameters.length_unit,
+      file,
+      &rest,
+      names);
   }
 
   const std::vector<Point<3>> &

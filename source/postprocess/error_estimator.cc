@@ -197,8 +197,8 @@ namespace RestShape
         ComponentMask(),
         nullptr,
         numbers::invalid_unsigned_int,
-        // A shared triangulation stores every
-        // cell: estimate on the owned ones.
+        // Ghost cells are estimated by their
+        // owners: estimate on the owned ones.
         tria.locally_owned_subdomain());
     const double eta = VectorTools::compute_global_error(tria,
                                                          estimate.indicators,

@@ -103,7 +103,7 @@ namespace RestShape
     e.l2_relative = norm_of(u, *function, VectorTools::L2_norm) / l2_exact;
     // A translation has no gradient (up to the round-off of the function's
     // difference quotients): the H1 error is then absolute.
-    const double l2_scale = l2_exact / GridTools::diameter(tria);
+    const double l2_scale = l2_exact / problem.mesh().diameter();
     e.h1_relative         = norm_of(u, *function, VectorTools::H1_seminorm) /
                     (h1_exact > 1e-8 * l2_scale ? h1_exact : 1.0);
 

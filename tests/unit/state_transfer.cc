@@ -13,8 +13,7 @@
 // rest displacement do).
 // 4. ForwardProblem::solve_from() falls back to loading from zero when
 //    Newton fails from its initial guess. Runs on 1 and on 2 MPI ranks (p4est
-//    and the shared
-// triangulation; tests/CMakeLists.txt).
+//    and the fully distributed triangulation; tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>

@@ -269,7 +269,7 @@ namespace RestShape
     std::pair<double, double>
     distance_to(const std::vector<dealii::Point<3>> &targets) const;
     /**
-     * Per active cell (by active cell index, summed over the ranks): its
+     * Per active cell (by LabelledMesh::cell_index(), from every rank): its
      * mass in the image over its density times its volume in the rest
      * shape X + w, i.e. the mesh's mass ratio times V_mesh / V_rest. What
      * a rest_shape.msh carries (LabelledMesh::mass_ratio()).
@@ -403,7 +403,7 @@ namespace RestShape
         if ((ghosts ? !cell->is_artificial() : cell->is_locally_owned()) &&
             labels.count(cell->material_id()))
           for (const unsigned int face : cell->face_indices())
-            if (cell->face(face)->at_boundary())
+            if (labelled_mesh.at_surface(*cell, face))
               f(cell, face);
     }
     struct ScratchData;

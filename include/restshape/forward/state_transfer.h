@@ -13,6 +13,7 @@
 
 #include <array>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace RestShape
@@ -27,7 +28,8 @@ namespace RestShape
    * handles coarsening; hanging nodes and fixed DoFs are set by the forward
    * problem's constraints. Tetrahedra: LabelledMesh rebuilds the
    * triangulation with every tetrahedron red-refined into eight (children
-   * of old cell i are new cells 8i..8i+7), so the fields are evaluated at
+   * of old cell i are new cells 8i..8i+7, on the rank of their parent), so
+   * the fields are evaluated at
    * the new nodes from the parent's shape functions; both meshes are affine,
    * so this is exact: the transferred field is the old one.
    */
@@ -55,13 +57,16 @@ namespace RestShape
       dealii::parallel::distributed::SolutionTransfer<3, VectorType>>
                             distributed;
     std::vector<VectorType> inputs;
-    // Tetrahedra: every old cell's vertices and, per field, its DoF values.
+    // Tetrahedra: every owned old cell's vertices and, per field, its DoF
+    // values, by LabelledMesh::cell_index() (the children of a cell stay
+    // on its rank), and the number of cells of the whole old mesh.
     struct OldCell
     {
       std::array<dealii::Point<3>, 4> vertices;
       std::vector<double>             values; // field-major
     };
-    std::vector<OldCell> old_cells;
+    std::unordered_map<std::size_t, OldCell> old_cells;
+    std::size_t                              n_old_cells = 0;
   };
 } // namespace RestShape
 

@@ -65,6 +65,15 @@ namespace RestShape
              const RestShapeData *rest  = nullptr,
              const LabelNames    &names = LabelNames());
 
+  /// The same for the cells of @p mesh in its order.
+  void
+  write_gmsh(const MeshDescription                               &mesh,
+             const std::function<dealii::Point<3>(unsigned int)> &position,
+             const double                                         length_unit,
+             const std::string                                   &file,
+             const RestShapeData                                 *rest,
+             const LabelNames                                    &names);
+
   /// The same for a mesh description (vertices in metres).
   void
   write_gmsh(const MeshDescription &mesh,

@@ -10,6 +10,7 @@
 
 #include <restshape/base/label_values.h>
 #include <restshape/base/parameters.h>
+#include <restshape/mesh/distributed_tetrahedra.h>
 #include <restshape/mesh/mesh_description.h>
 
 #include <functional>
@@ -23,8 +24,8 @@ namespace RestShape
 {
   /**
    * The computational mesh of a scene: the triangulation (distributed when
-   * run under MPI: shared for tetrahedra, p4est for hexahedra) and its
-   * labels.
+   * run under MPI: fully distributed for tetrahedra, each rank holding its
+   * cells and their neighbours; p4est for hexahedra) and its labels.
    */
   class LabelledMesh
   {
@@ -71,6 +72,36 @@ namespace RestShape
      */
     double
     mass_ratio(const dealii::CellAccessor<3, 3> &cell) const;
+
+    /**
+     * The index of @p cell among the active cells of the whole mesh, the
+     * same on any number of ranks (tetrahedra; hexahedra: its active cell
+     * index, the whole mesh's on one rank).
+     */
+    std::size_t
+    cell_index(const dealii::CellAccessor<3, 3> &cell) const;
+
+    /**
+     * Whether face @p f of @p cell (owned or ghost) lies on the surface of
+     * the mesh. On tetrahedra on several ranks, faces of ghost cells that
+     * only this rank's part ends at are not, nor are surface faces of
+     * ghost cells away from the owned cells (no owned DoF lies on them).
+     */
+    bool
+    at_surface(const dealii::CellAccessor<3, 3> &cell,
+               const unsigned int                f) const;
+
+    /**
+     * Write the active cells of the whole mesh (from every rank) as gmsh
+     * (write_gmsh()) on rank 0: vertex v of the triangulation at
+     * @p positions[v] (m), with the rest-shape data, targets (targets(),
+     * else the mesh's vertices) and @p rest_mass_ratios (by cell_index()).
+     * Not for hexahedra on several ranks (no rank knows the whole mesh).
+     */
+    void
+    write_gmsh(const std::vector<dealii::Point<3>> &positions,
+               const std::string                   &file,
+               const std::vector<double>           &rest_mass_ratios) const;
 
     /**
      * The target position (m) of every vertex of the mesh as read (and, on
@@ -132,12 +163,19 @@ namespace RestShape
     execute_refinement(const std::function<void()> &before_change);
 
     std::unique_ptr<dealii::Triangulation<3>> tria;
-    std::map<Label, unsigned int>             counts;
-    double                                    bounding_diameter;
-    std::pair<double, dealii::Point<3>>       gap;
-    std::vector<double>                       mass_ratios; // by coarse cell
-    std::vector<dealii::Point<3>>             vertex_targets;
-    LabelNames                                names;
+    /// Tetrahedra on several ranks: who owns which cell, the whole mesh
+    /// (a description: no rank builds its triangulation), and the index in
+    /// it of each vertex of the triangulation.
+    std::unique_ptr<CellPartition>      partition;
+    MeshDescription                     whole_mesh;
+    std::vector<unsigned int>           global_vertices;
+    std::vector<bool>                   of_owned_cell; // by vertex
+    std::map<Label, unsigned int>       counts;
+    double                              bounding_diameter;
+    std::pair<double, dealii::Point<3>> gap;
+    std::vector<double>                 mass_ratios; // by coarse cell id
+    std::vector<dealii::Point<3>>       vertex_targets;
+    LabelNames                          names;
   };
 
   /**
