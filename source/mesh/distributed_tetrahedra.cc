@@ -95,10 +95,14 @@ namespace RestShape
           local[v] = part.global_vertices.size();
           part.global_vertices.push_back(v);
           part.description.coarse_cell_vertices.push_back(mesh.vertices[v]);
+          if (!mesh.targets.empty())
+            part.targets.push_back(mesh.targets[v]);
         }
 
-    auto &d = part.description;
-    d.comm  = comm;
+    auto &d     = part.description;
+    d.comm      = comm;
+    d.settings  = TriangulationDescription::Settings::default_setting;
+    d.smoothing = Triangulation<3>::none;
     d.cell_infos.resize(1);
     for (const unsigned int c : cells)
       {
@@ -107,9 +111,97 @@ namespace RestShape
           cell.vertices[k] = local[mesh.cells[c].vertices[k]];
         cell.material_id = mesh.cells[c].material_id;
         d.coarse_cells.push_back(std::move(cell));
+        if (!mesh.mass_ratios.empty())
+          part.mass_ratios.push_back(mesh.mass_ratios[c]);
         d.coarse_cell_index_to_coarse_cell_id.push_back(c);
         d.cell_infos[0].push_back(cell_info(c, partition.owner(c)));
       }
     return part;
+  }
+
+  namespace
+  {
+    /// Owned cells: id, label, mass ratio, 4 vertices.
+    constexpr unsigned int cell_values = 7;
+
+    /// The owned cells and their vertices (index, position, target) of
+    /// @p part, as numbers.
+    std::pair<std::vector<double>, std::vector<double>>
+    pack(const RankPart &part)
+    {
+      std::vector<double> cells, vertices;
+      std::vector<bool>   packed(part.tria.n_vertices(), false);
+      for (const auto &cell : part.tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cells.push_back(cell->id().get_coarse_cell_id());
+            cells.push_back(cell->material_id());
+            cells.push_back(
+              part.mass_ratios.empty() ? 0. : part.mass_ratios[cell->index()]);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int i = cell->vertex_index(v);
+                cells.push_back(part.global_vertices[i]);
+                if (packed[i])
+                  continue;
+                packed[i] = true;
+                vertices.push_back(part.global_vertices[i]);
+                for (unsigned int c = 0; c < 3; ++c)
+                  vertices.push_back(part.positions[i][c]);
+                for (unsigned int c = 0; c < 3 && !part.targets.empty(); ++c)
+                  vertices.push_back(part.targets[i][c]);
+              }
+          }
+      return {cells, vertices};
+    }
+  } // namespace
+
+  MeshDescription
+  gather_mesh(const RankPart &part, const unsigned int root)
+  {
+    const MPI_Comm comm    = part.tria.get_communicator();
+    auto [cells, vertices] = pack(part);
+    const bool all         = root == numbers::invalid_unsigned_int;
+    const auto gather      = [&](const std::vector<double> &v) {
+      return all ? Utilities::MPI::all_gather(comm, v) :
+                        Utilities::MPI::gather(comm, v, root);
+    };
+    const std::vector<std::vector<double>> all_cells    = gather(cells);
+    const std::vector<std::vector<double>> all_vertices = gather(vertices);
+    MeshDescription                        mesh;
+    if (!all && Utilities::MPI::this_mpi_process(comm) != root)
+      return mesh;
+
+    const bool         targets  = !part.targets.empty();
+    const unsigned int per_node = targets ? 7 : 4;
+    mesh.vertices.resize(part.n_vertices);
+    if (targets)
+      mesh.targets.resize(part.n_vertices);
+    for (const auto &from : all_vertices)
+      for (std::size_t k = 0; k < from.size(); k += per_node)
+        {
+          const auto v     = static_cast<std::size_t>(from[k]);
+          mesh.vertices[v] = Point<3>(from[k + 1], from[k + 2], from[k + 3]);
+          if (targets)
+            mesh.targets[v] = Point<3>(from[k + 4], from[k + 5], from[k + 6]);
+        }
+    std::size_t n_cells = 0;
+    for (const auto &from : all_cells)
+      n_cells += from.size() / cell_values;
+    mesh.cells.resize(n_cells, CellData<3>(4));
+    if (!part.mass_ratios.empty())
+      mesh.mass_ratios.resize(n_cells);
+    for (const auto &from : all_cells)
+      for (std::size_t k = 0; k < from.size(); k += cell_values)
+        {
+          const auto   c    = static_cast<std::size_t>(from[k]);
+          CellData<3> &cell = mesh.cells[c];
+          cell.material_id  = static_cast<types::material_id>(from[k + 1]);
+          if (!mesh.mass_ratios.empty())
+            mesh.mass_ratios[c] = from[k + 2];
+          for (unsigned int v = 0; v < 4; ++v)
+            cell.vertices[v] = static_cast<unsigned int>(from[k + 3 + v]);
+        }
+    return mesh;
   }
 } // namespace RestShape

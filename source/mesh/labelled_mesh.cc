@@ -64,8 +64,7 @@ namespace RestShape
       tria = std::make_unique<Triangulation<3>>();
     else if (simplex)
       {
-        // Each rank holds its cells and their neighbours only; the whole
-        // mesh is kept as a description (whole_mesh).
+        // Each rank holds its cells and their neighbours only.
         tria =
           std::make_unique<parallel::fullydistributed::Triangulation<3>>(comm);
         partition = std::make_unique<CellPartition>(
@@ -78,8 +77,15 @@ namespace RestShape
     bounding_diameter = box.get_boundary_points().first.distance(
       box.get_boundary_points().second);
 
+    // Several ranks: refined before it is split (no rank would hold it all
+    // again); one rank: the triangulation is refined.
+    for (unsigned int r = 0; partition && r < prm.global_refinements; ++r)
+      {
+        mesh       = refine_tetrahedra(mesh);
+        *partition = partition->refined();
+      }
     create_triangulation(std::move(mesh));
-    for (unsigned int r = 0; r < prm.global_refinements; ++r)
+    for (unsigned int r = 0; !partition && r < prm.global_refinements; ++r)
       refine_global();
   }
 
@@ -171,25 +177,28 @@ namespace RestShape
     LocalPart part = local_part(mesh, *partition, tria->get_communicator());
     dynamic_cast<parallel::fullydistributed::Triangulation<3> &>(*tria)
       .create_triangulation(part.description);
-    global_vertices = std::move(part.global_vertices);
-    mass_ratios     = mesh.mass_ratios;
+    global_vertices  = std::move(part.global_vertices);
+    n_whole_vertices = mesh.vertices.size();
+    mass_ratios      = std::move(part.mass_ratios);
+    vertex_targets   = std::move(part.targets);
     of_owned_cell.assign(tria->n_vertices(), false);
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           of_owned_cell[cell->vertex_index(v)] = true;
-    vertex_targets.clear();
-    if (!mesh.targets.empty())
-      for (const unsigned int v : global_vertices)
-        vertex_targets.push_back(mesh.targets[v]);
-    whole_mesh = std::move(mesh);
   }
 
   MeshDescription
   LabelledMesh::coarse_description() const
   {
     if (partition)
-      return whole_mesh;
+      return gather_mesh(RankPart{*tria,
+                                  global_vertices,
+                                  n_whole_vertices,
+                                  tria->get_vertices(),
+                                  vertex_targets,
+                                  mass_ratios},
+                         numbers::invalid_unsigned_int);
     MeshDescription mesh;
     mesh.vertices = tria->get_vertices();
     mesh.cells.reserve(tria->n_cells(0));
@@ -216,13 +225,10 @@ namespace RestShape
         // Tetrahedra are rebuilt from the coarse cells (deal.II 9.4 does
         // not refine simplices in the tree); children stay on their
         // parent's rank.
+        MeshDescription fine = refine_tetrahedra(coarse_description());
         if (partition)
-          {
-            *partition = partition->refined();
-            create_triangulation(refine_tetrahedra(whole_mesh));
-          }
-        else
-          create_triangulation(refine_tetrahedra(coarse_description()));
+          *partition = partition->refined();
+        create_triangulation(std::move(fine));
         return;
       }
     tria->set_all_refine_flags();
@@ -316,8 +322,13 @@ namespace RestShape
   {
     if (mass_ratios.empty())
       return 1;
-    // The coarse cell's (its own, or its ancestor's on hexahedra).
-    return mass_ratios[cell.id().get_coarse_cell_id()];
+    // Tetrahedra: every cell is a coarse cell; hexahedra: the ancestor's.
+    if (cell.level() == 0)
+      return mass_ratios[cell.index()];
+    auto ancestor = cell.parent();
+    while (ancestor->level() > 0)
+      ancestor = ancestor->parent();
+    return mass_ratios[ancestor->index()];
   }
 
   bool
@@ -371,31 +382,23 @@ namespace RestShape
             names);
         return;
       }
-    // Rank 0 gathers the positions of every rank's owned cells.
-    std::vector<double> mine;
-    for (const auto &cell : tria->active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            mine.push_back(global_vertices[cell->vertex_index(v)]);
-            for (unsigned int c = 0; c < 3; ++c)
-              mine.push_back(positions[cell->vertex_index(v)][c]);
-          }
-    const auto all = Utilities::MPI::gather(comm, mine, 0);
+    // Rank 0 gathers the whole mesh at the positions; its targets are the
+    // mesh's (or the vertices).
+    const MeshDescription whole =
+      gather_mesh(RankPart{*tria,
+                           global_vertices,
+                           n_whole_vertices,
+                           positions,
+                           vertex_targets.empty() ? tria->get_vertices() :
+                                                    vertex_targets,
+                           {}},
+                  0);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::vector<Point<3>> whole(whole_mesh.vertices.size());
-    for (const auto &part : all)
-      for (std::size_t i = 0; i < part.size(); i += 4)
-        whole[static_cast<std::size_t>(part[i])] =
-          Point<3>(part[i + 1], part[i + 2], part[i + 3]);
-    rest.target = [&](const unsigned int v) {
-      return whole_mesh.targets.empty() ? whole_mesh.vertices[v] :
-                                          whole_mesh.targets[v];
-    };
+    rest.target = [&](const unsigned int v) { return whole.targets[v]; };
     RestShape::write_gmsh(
-      whole_mesh,
-      [&](const unsigned int v) { return whole[v]; },
+      whole,
+      [&](const unsigned int v) { return whole.vertices[v]; },
       parameters.length_unit,
       file,
       &rest,

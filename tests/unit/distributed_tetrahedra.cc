@@ -9,12 +9,18 @@
 //    owned cells of all ranks together are 0 .. n - 1, each once;
 // 4. after refine_global() the children of a cell stay on its rank and the
 //    mesh has 8 times the cells;
-// 5. the mesh's volume is the whole mesh's on any number of ranks.
+// 5. the mesh's volume is the whole mesh's on any number of ranks;
+// 6. the mesh written from the parts (LabelledMesh::write_gmsh(), rank 0
+//    gathers it) is the file one rank writes, byte for byte.
 // Runs on 1 and on 2 MPI ranks (tests/CMakeLists.txt).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
 #include <restshape/mesh/labelled_mesh.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "test_utilities.h"
 
@@ -83,15 +89,45 @@ main(int argc, char **argv)
   Parameters parameters;
   parameters.parse_parameters(prm);
 
-  double volume = 0;
+  // Named by the number of ranks: the 1- and 2-rank tests run side by side.
+  const auto file = [](const std::string &name) {
+    return (std::filesystem::temp_directory_path() /
+            (std::to_string(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
+             "_" + name))
+      .string();
+  };
+  const bool root   = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  double     volume = 0;
   {
     LabelledMesh reference(parameters.mesh, MPI_COMM_SELF);
     for (const auto &cell : reference.triangulation().active_cell_iterators())
       volume += cell->measure();
+    if (root)
+      reference.write_gmsh(reference.triangulation().get_vertices(),
+                           file("restshape_serial.msh"),
+                           {});
   }
   LabelledMesh      mesh(parameters.mesh, MPI_COMM_WORLD);
   const auto        coarse = check_layout("coarse brain", mesh, volume);
   const std::size_t n      = mesh.triangulation().n_global_active_cells();
+  mesh.write_gmsh(mesh.triangulation().get_vertices(),
+                  file("restshape_parts.msh"),
+                  {});
+  if (root)
+    {
+      const auto text = [](const std::string &name) {
+        std::ifstream     in(name);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+      };
+      const std::string serial = text(file("restshape_serial.msh"));
+      check_between("the mesh written from the parts is one rank's file",
+                    !serial.empty() &&
+                      serial == text(file("restshape_parts.msh")),
+                    1,
+                    1);
+    }
   mesh.refine_global();
   const auto fine = check_layout("refined once", mesh, volume);
   check_between("refined once: 8 times the cells",

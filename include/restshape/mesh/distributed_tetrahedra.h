@@ -46,6 +46,10 @@ namespace RestShape
   {
     dealii::TriangulationDescription::Description<3, 3> description;
     std::vector<unsigned int>                           global_vertices;
+    /// The mesh's targets and mass ratios (if any) of the part's vertices
+    /// and cells, in the order of the part.
+    std::vector<dealii::Point<3>> targets;
+    std::vector<double>           mass_ratios;
   };
 
   /**
@@ -59,6 +63,30 @@ namespace RestShape
   local_part(const MeshDescription &mesh,
              const CellPartition   &partition,
              const MPI_Comm         comm);
+
+  /// The parts of a mesh that gather_mesh() collects from each rank.
+  struct RankPart
+  {
+    const dealii::Triangulation<3> &tria;
+    /// Index in the whole mesh of each vertex of @p tria, and their count.
+    const std::vector<unsigned int> &global_vertices;
+    std::size_t                      n_vertices;
+    /// By vertex of @p tria: positions, targets (or empty).
+    const std::vector<dealii::Point<3>> &positions;
+    const std::vector<dealii::Point<3>> &targets;
+    /// By coarse cell index of @p tria (or empty).
+    const std::vector<double> &mass_ratios;
+  };
+
+  /**
+   * The whole mesh from the owned cells of every rank's @p part (cells in
+   * the order of their coarse cell ids, vertices numbered as in the whole
+   * mesh, at the given positions; with targets and mass ratios if the
+   * parts have them). On rank @p root only (empty elsewhere), or on every
+   * rank for root = numbers::invalid_unsigned_int.
+   */
+  MeshDescription
+  gather_mesh(const RankPart &part, const unsigned int root);
 } // namespace RestShape
 
 #endif

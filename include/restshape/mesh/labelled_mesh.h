@@ -163,19 +163,18 @@ namespace RestShape
     execute_refinement(const std::function<void()> &before_change);
 
     std::unique_ptr<dealii::Triangulation<3>> tria;
-    /// Tetrahedra on several ranks: who owns which cell, the whole mesh
-    /// (a description: no rank builds its triangulation), and the index in
-    /// it of each vertex of the triangulation.
+    /// Tetrahedra on several ranks: who owns which cell, the index in the
+    /// whole mesh of each vertex of the triangulation, and their number.
     std::unique_ptr<CellPartition>      partition;
-    MeshDescription                     whole_mesh;
     std::vector<unsigned int>           global_vertices;
+    std::size_t                         n_whole_vertices = 0;
     std::vector<bool>                   of_owned_cell; // by vertex
     std::map<Label, unsigned int>       counts;
     double                              bounding_diameter;
     std::pair<double, dealii::Point<3>> gap;
-    std::vector<double>                 mass_ratios; // by coarse cell id
-    std::vector<dealii::Point<3>>       vertex_targets;
-    LabelNames                          names;
+    std::vector<double> mass_ratios; // by coarse cell of the triangulation
+    std::vector<dealii::Point<3>> vertex_targets;
+    LabelNames                    names;
   };
 
   /**
