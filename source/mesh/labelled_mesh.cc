@@ -134,11 +134,9 @@ namespace RestShape
     std::vector<Point<3>> positions(tria->n_vertices());
     std::vector<bool>     set(tria->n_vertices(), false);
     const double          tolerance = 1e-9 * bounding_diameter;
-    unsigned int          n         = 0;
     for (const auto &cell : tria->active_cell_iterators())
       {
-        // The cells of a fully distributed mesh are its rank's part.
-        const std::size_t c         = partition ? cell_index(*cell) : n++;
+        const std::size_t c         = cell_index(*cell);
         const auto       &rest_cell = rest.cells[c];
         if (rest_cell.vertices.size() != cell->n_vertices())
           throw InputError(file,

@@ -81,13 +81,9 @@ main(int argc, char **argv)
 {
   prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  ParameterHandler                 prm;
-  Parameters::declare_parameters(prm);
-  prm.parse_input_from_string(
+  const Parameters                 parameters = parsed_parameters(
     "subsection Mesh\n set File = meshes/brain_coarse.msh\n set Length unit "
-    "= mm\n set Cell type = tetrahedra\nend\n");
-  Parameters parameters;
-  parameters.parse_parameters(prm);
+                    "= mm\n set Cell type = tetrahedra\nend\n");
 
   // Named by the number of ranks: the 1- and 2-rank tests run side by side.
   const auto file = [](const std::string &name) {

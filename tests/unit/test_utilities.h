@@ -82,20 +82,30 @@ namespace RestShape::Test
     return failures == 0 ? 0 : 1;
   }
 
+  /// The parameters of .prm text (defaults for what it does not set).
+  inline Parameters
+  parsed_parameters(const std::string &prm_text)
+  {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text);
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    return parameters;
+  }
+
   /// A forward problem set up from .prm text (file paths relative to the
   /// source directory, which tests run in).
   struct Scene
   {
     Scene(const std::string &prm_text)
-      : pcout(std::cout, false)
+      : parameters(parsed_parameters(prm_text))
+      , pcout(std::cout, false)
       , timer(MPI_COMM_WORLD,
               pcout,
               dealii::TimerOutput::never,
               dealii::TimerOutput::wall_times)
     {
-      Parameters::declare_parameters(prm);
-      prm.parse_input_from_string(prm_text);
-      parameters.parse_parameters(prm);
       mesh = std::make_unique<LabelledMesh>(parameters.mesh, MPI_COMM_WORLD);
       materials =
         std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
@@ -117,7 +127,6 @@ namespace RestShape::Test
       return *contact;
     }
 
-    dealii::ParameterHandler        prm;
     Parameters                      parameters;
     dealii::ConditionalOStream      pcout;
     dealii::TimerOutput             timer;
