@@ -4,6 +4,10 @@
 # their quotes).
 value() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \([^,]*\),*/\1/' | tr -d '"'; }
 
+# text_value KEY FILE: the whole string value of KEY in a summary.json
+# (value() stops at its first comma).
+text_value() { grep "\"$1\"" "$2" | head -1 | sed 's/^ *"[^"]*": "//; s/",\{0,1\}$//'; }
+
 # machine: "N cores, CPU model" of this machine.
 machine() { echo "$(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"; }
 

@@ -60,7 +60,10 @@ namespace RestShape
         const VectorType *start = guess ? &*guess : nullptr;
         stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
                                              solve_forward(rest, start);
-        check_stability_of_equilibrium(stats);
+        // The final equilibrium is the result; earlier cycles only lead
+        // to it (the check would cost each of them as much again).
+        if (cycle == parameters.refinement.cycles)
+          check_stability_of_equilibrium(stats);
         // The next solve is on a refined mesh or a prestress comparison:
         // the error estimator gets the AMG's or factorisation's memory.
         forward->release_linear_solver();
@@ -140,7 +143,7 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
-    if (forward && parameters.solver.check_stability &&
+    if (forward && parameters.solver.check_stability == StabilityCheck::on &&
         !forward->tangent_is_symmetric())
       throw InputError(
         prm_file,
@@ -291,13 +294,34 @@ namespace RestShape
   SolveStatistics
   Simulator::solve_forward(const VectorType &rest, const VectorType *guess)
   {
-    const SolveStatistics stats =
+    // A forward simulation brings nodes that start beyond the obstacle
+    // onto it (the one-sided rule is the inverse iteration's): say so.
+    std::string beyond;
+    if (contact && guess == nullptr)
+      {
+        const auto n =
+          forward->nodal_norms_above(contact->admissible_target_shift(), 0.);
+        if (n.n > 0)
+          {
+            beyond = std::to_string(n.n) +
+                     " contact nodes of the mesh start beyond the obstacle "
+                     "(by up to " +
+                     number_text(n.max * 1e3) + " mm)";
+            pcout << "Contact: " << beyond
+                  << ": the forward solve brings them onto it" << std::endl;
+          }
+      }
+    SolveStatistics stats =
       forward->solve_from(guess, forward->scene_load(), rest);
     pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
           << " in " << stats.newton_iterations << " Newton iterations, "
           << stats.load_steps << " load step(s)" << std::endl;
     if (!stats.converged)
       {
+        if (!beyond.empty())
+          stats.failure += "; " + beyond +
+                           ", which the solve had to push onto it (a "
+                           "forward simulation starts inside the obstacle)";
         write_summary(stats);
         throw SolverFailure("the forward solve did not converge: " +
                             stats.failure);
@@ -390,8 +414,10 @@ namespace RestShape
     if (!inverse_result.converged)
       {
         stats.failure = inverse_result.reason;
-        // Whether the iteration had a stable target to converge to.
-        if (parameters.solver.check_stability)
+        // Whether the iteration had a stable target to converge to (if it
+        // reached an equilibrium at all).
+        if (inverse_result.forward_solves > 0 &&
+            stability_not_checked_because().empty())
           {
             const std::string unstable = stability_text();
             stats.failure += unstable.empty() ?
@@ -446,22 +472,56 @@ namespace RestShape
   }
 
   std::string
+  Simulator::stability_not_checked_because() const
+  {
+    if (parameters.solver.check_stability == StabilityCheck::off)
+      return "Solver/Check stability = false";
+    if (!forward->tangent_is_symmetric())
+      return "the follower pressure acts on a surface with free edges: its "
+             "tangent is not symmetric, and stability is then not a question "
+             "of the energy";
+    return "";
+  }
+
+  std::string
   Simulator::stability_text()
   {
-    TimerOutput::Scope    scope(timer, "Stability");
-    const StabilityResult s = check_stability(*forward);
+    TimerOutput::Scope scope(timer, "Stability");
+    StabilityResult    s;
+    try
+      {
+        s = check_stability(*forward);
+      }
+    catch (const SolverFailure &e)
+      {
+        // Inner solves of an indefinite tangent may fail with CG + AMG.
+        const std::string reason =
+          std::string("its linear solves failed: ") + e.what();
+        summary.set("stability_checked", false);
+        summary.set("stability_not_checked", reason);
+        pcout << "  Stability: not determined (" << reason << ")" << std::endl;
+        return "";
+      }
+    summary.set("stability_checked", true);
     summary.set("stable", s.stable());
     summary.set("negative_eigenvalues", long(s.negative_eigenvalues));
     summary.set("smallest_eigenvalue_per_s2", s.smallest_eigenvalue);
-    pcout << "  Stability: " << s.text() << std::endl;
+    pcout << "  Stability: " << s.text()
+          << (s.exact_solves ? "" : " (" + s.variant_text() + ")") << std::endl;
     return s.stable() ? std::string() : s.text();
   }
 
   void
   Simulator::check_stability_of_equilibrium(const SolveStatistics &stats)
   {
-    if (!parameters.solver.check_stability)
-      return;
+    const std::string skip = stability_not_checked_because();
+    if (!skip.empty())
+      {
+        summary.set("stability_checked", false);
+        summary.set("stability_not_checked", skip);
+        pcout << "  Stability: not checked (" << skip << ")" << std::endl;
+        return;
+      }
     const std::string unstable = stability_text();
     if (unstable.empty())
       return;

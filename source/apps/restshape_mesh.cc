@@ -351,7 +351,9 @@ namespace
   /// The skull's facet distance (mm): within half the gap of the exact
   /// surface, so that the mesh stays inside; for a gap <= 0 (a skull that
   /// touches or cuts the mesh) a tenth of its facet size, so that where it
-  /// cuts is decided by the gap, not by its chords.
+  /// cuts is decided by the gap, not by its chords. (Small gaps cost
+  /// triangles: on the coarse brain with --skull-facet-size 5, 680,704
+  /// triangles in 147 s at 0.1 mm, 95,964 in 15 s at 0.4 mm.)
   double
   skull_facet_distance(const double facet_distance,
                        const double gap,
@@ -412,18 +414,20 @@ namespace
               << " s; distance from the mesh's surface nodes to it: min "
               << min_gap << ", mean " << sum / nodes.size() << ", max "
               << max_gap << " mm" << std::endl;
-    if (s.skull_gap > 0 && min_gap <= 0)
-      throw InputError(s.skull_out,
-                       "--skull-gap",
-                       "a surface node of the mesh lies outside the skull "
-                       "(gap " +
-                         number_text(min_gap) +
-                         " mm); expected a gap larger than --facet-distance");
+    // The mesh's surface follows the image only to within
+    // --facet-distance: a skull closer to the image than that may leave
+    // surface nodes beyond it, whatever the sign of the gap.
     if (min_gap < 0)
       std::cout << "skull: " << outside << " of " << nodes.size()
                 << " surface nodes of the mesh lie outside it (by up to "
-                << -min_gap
-                << " mm): the target crosses the skull; restshape iterates "
+                << -min_gap << " mm"
+                << (segmented || s.skull_gap <= 0 ?
+                      std::string() :
+                      "; the mesh's surface follows the image to within "
+                      "--facet-distance = " +
+                        number_text(s.options.facet_distance) +
+                        " mm, more than the gap")
+                << "): the target crosses the skull; restshape iterates "
                    "towards their projection onto it (the admissible target)"
                 << std::endl;
   }

@@ -205,8 +205,9 @@ namespace RestShape
     VectorType flags(forward.locally_owned_dofs(), comm);
     for (const Candidate &c : candidates)
       if (c.owned)
-        flags[c.node.dofs[0]] =
-          (c.active ? 1 : 0) + (c.eligible ? 2 : 0) + 4 * c.dropped;
+        flags[c.node.dofs[0]] = (c.active ? 1 : 0) + (c.eligible ? 2 : 0) +
+                                4 * c.dropped +
+                                (c.follow_surface ? follow_surface_flag : 0);
     flags.compress(VectorOperation::insert);
     const VectorType ghosted = forward.ghosted_copy(flags);
     for (Candidate &c : candidates)
@@ -215,8 +216,10 @@ namespace RestShape
           const int f = static_cast<int>(std::lround(ghosted[c.node.dofs[0]]));
           c.active    = (f & 1) != 0;
           c.eligible  = (f & 2) != 0;
+          if ((f & follow_surface_flag) != 0 && !c.follow_surface)
+            follow_surface(c);
           // Held planes its owner let go (thaw_if_adhesive()).
-          drop_planes(c, f / 4);
+          drop_planes(c, (f % follow_surface_flag) / 4);
         }
     for (Candidate &c : candidates)
       c.dropped = 0;
@@ -237,8 +240,14 @@ namespace RestShape
     releases_frozen = false;
     n_added = n_released = 0;
     n_updates = n_thaws = 0;
+    free_updates        = parameters.free_updates;
+    constraints_changed = false;
+    cycle.clear();
+    rounds.clear();
     for (Candidate &c : candidates)
       {
+        c.strictly_released = false;
+        c.follow_surface    = false;
         const Point<3> x    = position(c, d);
         const Gap      g    = obstacle->gap(x);
         c.gap               = g.gap;
@@ -246,7 +255,10 @@ namespace RestShape
         c.previous_position = x;
         // Warm start: the active set of the last solve, for nodes that are
         // on the allowed side and within a cell size of the obstacle now.
-        c.eligible = g.gap >= -gap_tolerance;
+        // A forward simulation brings every node onto the allowed side; the
+        // one-sided rule of the inverse iteration lets a node that starts
+        // beyond the obstacle free until it has been on the allowed side.
+        c.eligible = !one_sided || g.gap >= -gap_tolerance;
         c.active   = c.active && c.eligible && g.gap < h_min;
         c.pulled   = false;
         c.grazing  = false;
@@ -254,6 +266,14 @@ namespace RestShape
         c.planes.reset();
       }
     share_flags();
+  }
+
+  void
+  ContactProblem::follow_surface(Candidate &c)
+  {
+    c.normal         = c.planes.normal();
+    c.follow_surface = true;
+    let_go(c);
   }
 
   void
@@ -313,12 +333,15 @@ namespace RestShape
         // While releases are frozen (the active set only grows) an active
         // node follows the closest face, or holds the planes of a crease;
         // otherwise, and for inactive nodes, the smoothed normal.
-        if (releases_frozen && c.active)
+        if (c.follow_surface && c.active)
+          ; // its normal stays (follow_surface())
+        else if (releases_frozen && c.active)
           c.planes.update(
             x, g, gap_tolerance, parameters.plane_changes, c.normal);
         else
           {
-            c.normal = g.normal;
+            c.normal         = g.normal;
+            c.follow_surface = false;
             let_go(c);
           }
         c.planes.set_closest_face(x, g);
@@ -358,10 +381,14 @@ namespace RestShape
             std::hash<types::global_dof_index>()(c.node.dofs[0]) * 2654435761u;
       }
     share_flags();
-    n_added            = Utilities::MPI::sum(n_added, comm);
-    n_released         = Utilities::MPI::sum(n_released, comm);
-    hash               = Utilities::MPI::sum(hash, comm);
-    const bool changed = n_added + n_released > 0;
+    n_added    = Utilities::MPI::sum(n_added, comm);
+    n_released = Utilities::MPI::sum(n_released, comm);
+    hash       = Utilities::MPI::sum(hash, comm);
+    // A release or plane change since the last update (thaw_if_adhesive(),
+    // enforce_conditions()) changed the constraints too: the next step is
+    // taken whole, as after any change of the set.
+    const bool changed  = n_added + n_released > 0 || constraints_changed;
+    constraints_changed = false;
     // Cycling: an active set seen before in this solve comes back. Then
     // nodes may still be added but no longer released, which ends the cycle.
     if (changed && history.count(hash) && !releases_frozen)
@@ -370,7 +397,7 @@ namespace RestShape
     // many active sets without repeating one: after Free active-set updates the
     // set only grows, which ends in a converged state; thaw_if_adhesive()
     // then releases nodes that pull.
-    if (++n_updates >= parameters.free_updates)
+    if (++n_updates >= free_updates)
       releases_frozen = true;
     history.insert(hash);
     return changed;
@@ -454,6 +481,7 @@ namespace RestShape
       Utilities::MPI::sum(static_cast<unsigned int>(pulling.size()), comm);
     n_added = 0;
     ++n_thaws;
+    constraints_changed = true;
     return true;
   }
 

@@ -229,6 +229,25 @@ namespace RestShape
     return shift;
   }
 
+  std::vector<Tensor<1, 3>>
+  ContactProblem::target_normals() const
+  {
+    std::vector<double> mine;
+    for (const Candidate &c : candidates)
+      if (c.owned)
+        {
+          const Gap g = obstacle->gap(c.node.position);
+          if (g.gap <= gap_tolerance)
+            for (unsigned int k = 0; k < 3; ++k)
+              mine.push_back(g.gradient[k]);
+        }
+    std::vector<Tensor<1, 3>> normals;
+    for (const auto &part : Utilities::MPI::all_gather(communicator(), mine))
+      for (unsigned int i = 0; i + 2 < part.size(); i += 3)
+        normals.push_back(Tensor<1, 3>({part[i], part[i + 1], part[i + 2]}));
+    return normals;
+  }
+
   double
   ContactProblem::node_force_tolerance(const Candidate &c,
                                        const double     force_tolerance) const
@@ -278,6 +297,25 @@ namespace RestShape
     return result;
   }
 
+  std::size_t
+  ContactProblem::round_signature(const ContactConditions &violated) const
+  {
+    std::size_t hash = 0;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        hash += std::hash<types::global_dof_index>()(c.node.dofs[0]) *
+                (2654435761u + c.planes.planes().size());
+    hash = Utilities::MPI::sum(hash, communicator());
+    for (const Violation *v :
+         {&violated.through, &violated.off, &violated.pulling})
+      hash =
+        hash * 31 + std::hash<std::string>()(
+                      std::to_string(v->nodes) + ' ' +
+                      std::to_string(std::lround(1e9 * v->where[0])) + ' ' +
+                      std::to_string(std::lround(1e9 * v->where[1])));
+    return hash;
+  }
+
   bool
   ContactProblem::enforce_conditions(const ContactConditions &violated,
                                      const VectorType        &raw_residual,
@@ -285,18 +323,28 @@ namespace RestShape
   {
     if (violated.satisfied())
       return false;
-    unsigned int        changed = 0, released = 0;
+    // A converged state seen before in this solve (the same active nodes
+    // and the same violations) would only lead to the same rounds again.
+    if (!rounds.insert(round_signature(violated)).second)
+      {
+        cycle = "the same converged state comes back (" + violated.text() + ")";
+        return false;
+      }
+    unsigned int        changed = 0, released = 0, repeated = 0;
     std::vector<double> lambda;
     for (Candidate &c : candidates)
       {
         if (!c.owned || !c.active)
           continue;
         // Planes (held or fixed) that carried the node off the surface or
-        // through it, past the end of their faces: it follows the surface
-        // again, still active (and may hold planes again later).
+        // through it, past the end of their faces: for the rest of the
+        // solve it follows the surface itself (its distance, which is
+        // continuous) along the planes' mean normal, still active. (Let go
+        // to follow the faces again, it would alternate between them, hold
+        // their planes again and come back here: a cycle of rounds.)
         if (!c.planes.planes().empty() && std::abs(c.gap) > gap_tolerance)
           {
-            let_go(c);
+            follow_surface(c);
             ++changed;
             continue;
           }
@@ -321,6 +369,8 @@ namespace RestShape
         c.active = false;
         c.pulled = true;
         ++released;
+        repeated += c.strictly_released;
+        c.strictly_released = true;
       }
     for (Candidate &c : candidates)
       drop_planes(c, c.dropped);
@@ -328,10 +378,18 @@ namespace RestShape
     const MPI_Comm comm = communicator();
     n_released          = Utilities::MPI::sum(released, comm);
     n_added             = 0;
+    constraints_changed = true;
+    repeated            = Utilities::MPI::sum(repeated, comm);
     // After releases, a free phase of the active set again (a lift-off
     // front moves by a row of nodes per update: releases that wait for
-    // Newton to converge move it a row per solve).
-    if (n_released > 0)
+    // Newton to converge move it a row per solve). Nodes released again
+    // after coming back: the free phases do not settle the set (seen: the
+    // brain at 2 g along +-x, the same node pulling by 200 Pa in every
+    // round), and from now on nodes are released only once Newton has
+    // converged.
+    if (repeated > 0)
+      free_updates = 0;
+    if (n_released > 0 && free_updates > 0)
       {
         releases_frozen = false;
         n_updates       = 0;

@@ -126,7 +126,8 @@ namespace RestShape
                           &raw_buffer,
                           &condensed_buffer,
                           &external_buffer,
-                          &rhs_buffer})
+                          &rhs_buffer,
+                          &magnitude_buffer})
       b->reinit(owned_dofs, relevant_dofs, comm);
     current_load = LoadState();
 
@@ -183,14 +184,6 @@ namespace RestShape
           << (all_held ? "direct up to " + std::to_string(auto_direct_dofs) :
                          std::string("a direction no fixed label holds"))
           << ")" << std::endl;
-    if (chosen == LinearSolverType::cg_amg && parameters.solver.check_stability)
-      throw InputError("",
-                       "Solver/Check stability",
-                       "Linear solver = auto chose cg-amg for " +
-                         std::to_string(n) +
-                         " DoFs; the stability check needs a direct "
-                         "factorisation: expected Solver/Linear solver = "
-                         "direct");
     return chosen;
   }
 
@@ -255,36 +248,62 @@ namespace RestShape
   }
 
   bool
+  ForwardProblem::is_held(const types::global_dof_index dof) const
+  {
+    // A hanging DoF on the edge of a fixed cell follows that edge's DoFs.
+    if (is_fixed(dof))
+      return true;
+    if (!constraints_hanging.is_constrained(dof))
+      return false;
+    const auto *entries = constraints_hanging.get_constraint_entries(dof);
+    return entries != nullptr && !entries->empty() &&
+           std::all_of(entries->begin(), entries->end(), [this](const auto &e) {
+             return is_fixed(e.first);
+           });
+  }
+
+  bool
   ForwardProblem::pressure_surface_is_closed_or_held() const
   {
     // Edges (vertex pairs) of the pressure faces of owned and ghost cells,
     // with the number of pressure faces that share them: an edge of only
     // one is an edge of the loaded surface.
+    // With hanging nodes, a coarse face's edge is refined on its finer
+    // neighbour's side: its halves are the edges that count.
     std::map<std::pair<unsigned int, unsigned int>, unsigned int> count;
     const auto key = [](const auto &line) {
       const unsigned int a = line->vertex_index(0), b = line->vertex_index(1);
       return std::make_pair(std::min(a, b), std::max(a, b));
     };
+    const auto for_each_edge = [](const auto &face, const auto &f) {
+      for (unsigned int l = 0; l < face->n_lines(); ++l)
+        {
+          const auto line = face->line(l);
+          if (line->has_children())
+            for (unsigned int c = 0; c < line->n_children(); ++c)
+              f(line->child(c));
+          else
+            f(line);
+        }
+    };
     for_each_boundary_face(
       pressure_labels,
       [&](const auto &cell, auto f) {
-        for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
-          ++count[key(cell->face(f)->line(l))];
+        for_each_edge(cell->face(f),
+                      [&](const auto &line) { ++count[key(line)]; });
       },
       true);
     bool                                 held = true;
     std::vector<types::global_dof_index> dofs;
     for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
-      for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
-        {
-          const auto line = cell->face(f)->line(l);
-          if (count[key(line)] != 1)
-            continue;
-          dofs.resize(fe_.n_dofs_per_line() + 2 * fe_.n_dofs_per_vertex());
-          line->get_dof_indices(dofs);
-          for (const auto dof : dofs)
-            held = held && is_fixed(dof);
-        }
+      for_each_edge(cell->face(f), [&](const auto &line) {
+        if (count[key(line)] != 1)
+          return;
+        dofs.resize(fe_.n_dofs_per_line() + 2 * fe_.n_dofs_per_vertex());
+        line->get_dof_indices(dofs);
+        for (const auto dof : dofs)
+          held = held && is_held(dof);
+      });
     });
     return Utilities::MPI::min(held ? 1 : 0, comm) == 1;
   }

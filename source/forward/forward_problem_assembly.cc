@@ -65,12 +65,14 @@ namespace RestShape
       : cell_matrix(n, n)
       , cell_rhs(n)
       , cell_external(n)
+      , cell_magnitude(n)
       , dofs(n)
     {}
 
     FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;      // f_ext - f_int
-    Vector<double>                       cell_external; // f_ext
+    Vector<double>                       cell_rhs;       // f_ext - f_int
+    Vector<double>                       cell_external;  // f_ext
+    Vector<double>                       cell_magnitude; // |f_ext| + |f_int|
     std::vector<types::global_dof_index> dofs;
     bool                                 valid = true;
     Point<3>                             center; // of an inverted cell
@@ -88,13 +90,16 @@ namespace RestShape
     CopyData                                           &copy,
     const Assemble                                      what) const
   {
-    const unsigned int n_dofs    = fe_.n_dofs_per_cell();
-    const bool         matrix    = (what == Assemble::residual_and_matrix);
-    FEValues<3>       &fe_values = scratch.fe_values;
+    const unsigned int n_dofs     = fe_.n_dofs_per_cell();
+    const bool         matrix     = (what == Assemble::residual_and_matrix);
+    const bool         magnitudes = (what == Assemble::residual_and_magnitudes);
+    FEValues<3>       &fe_values  = scratch.fe_values;
     fe_values.reinit(cell);
     cell->get_dof_indices(copy.dofs);
     copy.cell_rhs      = 0;
     copy.cell_external = 0;
+    if (magnitudes)
+      copy.cell_magnitude = 0;
     if (matrix)
       copy.cell_matrix = 0;
     copy.valid = true;
@@ -140,8 +145,11 @@ namespace RestShape
             scratch.b[i]          = G_inv_T * fe_values.shape_grad(i, q);
             const double f_ext =
               fe_values.shape_value(i, q) * body_force[ci] * JxW;
+            const double f_int = (P[ci] * scratch.b[i]) * dV_rest;
             copy.cell_external(i) += f_ext;
-            copy.cell_rhs(i) += f_ext - (P[ci] * scratch.b[i]) * dV_rest;
+            copy.cell_rhs(i) += f_ext - f_int;
+            if (magnitudes)
+              copy.cell_magnitude(i) += std::abs(f_ext) + std::abs(f_int);
           }
         if (!matrix)
           continue;
@@ -334,6 +342,8 @@ namespace RestShape
     raw_buffer       = 0;
     condensed_buffer = 0;
     external_buffer  = 0;
+    if (what == Assemble::residual_and_magnitudes)
+      magnitude_buffer = 0;
     if (matrix)
       {
         tangent    = 0;
@@ -351,7 +361,7 @@ namespace RestShape
       [this, what](const CellFilter &cell, ScratchData &s, CopyData &c) {
         local_assemble(cell, s, c, what);
       },
-      [this, matrix, &all_valid, &energy, &inverted](const CopyData &c) {
+      [this, what, matrix, &all_valid, &energy, &inverted](const CopyData &c) {
         if (!c.valid)
           {
             if (all_valid)
@@ -373,6 +383,10 @@ namespace RestShape
         constraints_newton.distribute_local_to_global(c.cell_rhs,
                                                       c.dofs,
                                                       condensed_buffer);
+        if (what == Assemble::residual_and_magnitudes)
+          constraints_newton.distribute_local_to_global(c.cell_magnitude,
+                                                        c.dofs,
+                                                        magnitude_buffer);
         if (matrix)
           constraints_newton.distribute_local_to_global(
             c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_buffer);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace RestShape
 {
@@ -24,27 +25,17 @@ namespace RestShape
     }
 
     /**
-     * Whether Newton has reached its round-off floor: the relative
-     * residual @p now is within a factor of 100 of the tolerance @p tol and
-     * the relative residuals @p history of the accepted steps (the last one
-     * led to @p now) have not halved over the last five steps (seen:
-     * 2.4e-10 to 3.3e-10 for 46 steps against 1e-10 on 140k DoFs).
+     * Whether the last accepted step of Newton (the residuals @p history
+     * of the accepted steps since the constraints last changed; the last
+     * one led to @p now) stalled: it kept more than half of the residual.
+     * Only then is the round-off level worth measuring.
      */
     bool
-    at_round_off_floor(const std::vector<double> &history,
-                       const double               now,
-                       const double               tol)
+    stalled(const std::vector<double> &history, const double now)
     {
-      const unsigned int window       = 5;
-      const double       floor_factor = 100;
-      // The last accepted step must have led to this very state (not a
-      // state a contact update has changed since).
-      if (now > floor_factor * tol || history.size() <= window ||
-          std::abs(history.back() - now) > 1e-6 * now)
-        return false;
-      const double before = history[history.size() - 1 - window];
-      return *std::min_element(history.end() - window, history.end()) >
-             0.5 * before;
+      return history.size() >= 2 &&
+             std::abs(history.back() - now) <= 1e-6 * now &&
+             history.back() > 0.5 * history[history.size() - 2];
     }
   } // namespace
 
@@ -117,15 +108,69 @@ namespace RestShape
   }
 
   void
-  ForwardProblem::solve_with_tangent(VectorType &x, const VectorType &b)
+  ForwardProblem::solve_with_tangent(VectorType       &x,
+                                     const VectorType &b,
+                                     const double      tolerance)
   {
-    linear_solver->solve_prepared(x, b);
+    linear_solver->solve_prepared(x, b, tolerance);
   }
 
   bool
   ForwardProblem::tangent_solves_are_exact() const
   {
     return linear_solver->solves_prepared_exactly();
+  }
+
+  double
+  ForwardProblem::measure_round_off()
+  {
+    // The residual at displacements moved by about the smallest change the
+    // state resolves (an ulp of d, or of F = I + grad d: eps h_min) at every
+    // free DoF, less the tangent's linear response to that move: what is
+    // left is the noise of evaluating the residual (at small strains, of
+    // the co-rotational stress 2 mu (F - R): eps against the strain), the
+    // level below which no Newton step can bring it. Needs the tangent of
+    // the current state (the top of a Newton step).
+    const VectorType d_start = d, raw = residual_raw,
+                     condensed = residual_condensed,
+                     external  = external_condensed;
+    const double energy        = total_energy;
+    const double resolution    = std::numeric_limits<double>::epsilon() *
+                              labelled_mesh.minimum_cell_diameter();
+    VectorType move = zero_vector();
+    for (const auto i : owned_dofs)
+      if (!constraints_newton.is_constrained(i))
+        {
+          const double sign =
+            std::sin(12.9898 * double(i) + 78.233) >= 0 ? 1 : -1;
+          const double ulp =
+            std::abs(std::nextafter(d_start[i],
+                                    std::numeric_limits<double>::infinity()) -
+                     d_start[i]);
+          move[i] = sign * std::max(ulp, resolution);
+        }
+    move.compress(VectorOperation::insert);
+    d += move;
+    d_ghost = d;
+    assemble(Assemble::residual);
+    // R(d + m) - R(d) + K m (R = f_ext - f_int decreases by K m).
+    VectorType noise = residual_condensed;
+    noise -= condensed;
+    VectorType response = zero_vector();
+    tangent.vmult(response, move);
+    noise += response;
+    for (const auto i : owned_dofs)
+      if (constraints_newton.is_constrained(i))
+        noise[i] = 0;
+    noise.compress(VectorOperation::insert);
+    const double level = noise.l2_norm() / std::sqrt(2.);
+    d                  = d_start;
+    d_ghost            = d;
+    residual_raw       = raw;
+    residual_condensed = condensed;
+    external_condensed = external;
+    total_energy       = energy;
+    return level;
   }
 
   void
@@ -157,9 +202,13 @@ namespace RestShape
                                      residual_raw,
                                      force_tolerance))
       {
-        stats.failure = "the contact conditions cannot be met (after " +
-                        std::to_string(corrections) +
-                        " rounds of releases): " + last_conditions.text();
+        stats.failure = contact->cycle_text().empty() ?
+                          "the contact conditions cannot be met (after " +
+                            std::to_string(corrections) +
+                            " rounds of releases): " + last_conditions.text() :
+                          "the contact set cycles (after " +
+                            std::to_string(corrections) +
+                            " rounds of releases): " + contact->cycle_text();
         return false;
       }
     ++corrections;
@@ -170,6 +219,10 @@ namespace RestShape
 
   namespace
   {
+    /// A stalled residual within this factor of the measured round-off
+    /// level is at that level (seen: a plateau at 2.5e-10 against a
+    /// measured 2.8e-10, P1 cantilever refined twice).
+    constexpr double round_off_margin = 3;
     /// Step lengths tried by the line search: 1, 1/2, ..., 1/2^11.
     constexpr unsigned int line_search_trials = 12;
     /// Armijo's sufficient decrease.
@@ -184,29 +237,48 @@ namespace RestShape
                                     unsigned int    &corrections)
   {
     const double tol = parameters.solver.newton_tolerance;
-    const bool   floor =
-      residual > tol * reference &&
-      at_round_off_floor(stats.residual_history, residual / reference, tol);
+    // Above the tolerance, a stalled Newton counts as converged only where
+    // the residual is at the round-off level of its state, measured
+    // (measure_round_off(): what one ulp of every displacement makes).
+    bool floor = false;
+    if (residual > tol * reference &&
+        stalled(stats.residual_history, residual / reference))
+      {
+        if (stats.round_off == 0)
+          stats.round_off =
+            std::hypot(measure_round_off(), stats.linear_residual) / reference;
+        floor = residual / reference <= round_off_margin * stats.round_off;
+      }
     if (!((residual <= tol * reference || floor) &&
           (contact == nullptr || (!set_changed && contact->is_satisfied()))))
       return NewtonState::iterate;
+    stats.at_round_off = floor;
     if (floor)
-      pcout << format("      Newton: |R|/|f| = %.2e has stopped "
-                      "decreasing (round-off; tolerance %.0e): "
-                      "converged there",
+      pcout << format("      Newton: |R|/|f| = %.2e is at the round-off "
+                      "level of this state (measured: %.2e, the noise of "
+                      "evaluating the residual); tolerance %.0e not met, "
+                      "converged at the round-off level",
                       residual / reference,
+                      stats.round_off,
                       tol)
             << std::endl;
     if (contact == nullptr)
       return NewtonState::converged;
+    // A change of the constraints starts a new convergence history.
+    const auto new_history = [&stats]() {
+      stats.residual_history.clear();
+      stats.round_off = 0;
+    };
     if (contact->thaw_if_adhesive(residual_raw))
       {
+        new_history();
         pcout << "      active nodes pull on the obstacle: released"
               << contact->progress_text() << std::endl;
         return NewtonState::iterate;
       }
     if (contact_conditions_hold(stats, reference, corrections))
       return NewtonState::converged;
+    new_history();
     return stats.failure.empty() ? NewtonState::iterate : NewtonState::failed;
   }
 
@@ -227,6 +299,16 @@ namespace RestShape
         linear_solver->solve(tangent, newton_update, rhs_newton, eta);
       stats.linear_iterations += iterations;
     }
+    // What an exact (direct) solve leaves: the floor below which this
+    // step cannot bring the residual (backward error eps |K| |delta|, far
+    // above the residual's own round-off on ill-conditioned systems).
+    if (linear_solver->solves_prepared_exactly())
+      {
+        VectorType r = rhs_newton;
+        tangent.vmult(r, newton_update);
+        r -= rhs_newton;
+        stats.linear_residual = r.l2_norm();
+      }
     constraints_newton.distribute(newton_update);
     ++stats.newton_iterations;
     return iterations;
@@ -308,7 +390,13 @@ namespace RestShape
     const double tol = parameters.solver.newton_tolerance;
     if (contact != nullptr)
       contact->begin_solve(d_ghost);
+    // Each attempt (a load step, its halvings) is judged on its own: a
+    // failure left from an earlier attempt would fail this one at its first
+    // contact correction.
+    stats.failure.clear();
     stats.cells_inverted = false;
+    stats.at_round_off   = false;
+    stats.round_off      = 0;
     stats.residual_history.clear();
     double reference = 0;
     // Inexact Newton: the previous step's residual and linear tolerance.
@@ -338,6 +426,11 @@ namespace RestShape
             set_changed =
               contact->update_active_set(d_ghost, residual_raw, it == 1);
             stats.active_set_changes += set_changed;
+            if (set_changed)
+              {
+                stats.residual_history.clear();
+                stats.round_off = 0;
+              }
           }
         make_newton_constraints();
         tangent_type = strategy.tangent();
@@ -428,6 +521,41 @@ namespace RestShape
     return false;
   }
 
+  std::string
+  ForwardProblem::give_up_text(const SolveStatistics &stats,
+                               const FailedAttempts  &failed,
+                               const unsigned int     halvings) const
+  {
+    // Where the load stepping stopped and how compressed its equilibrium
+    // is, then what failed beyond it: steps that inverted cells (with one
+    // of them), and the last failure.
+    const Compression c = most_compressed_cell();
+    std::string       text =
+      format("gave up at %.4f of the full load "
+             "(its equilibrium compresses cells to "
+             "det F = %.3g, ",
+             stats.fraction,
+             c.det_F) +
+      c.where + ") after " + std::to_string(halvings - 1) +
+      " halvings of the load increment: " + std::to_string(failed.count) +
+      " failed attempts";
+    if (failed.inverting > 0)
+      text += ", " + std::to_string(failed.inverting) +
+              format(" of them because Newton's steps inverted cells (towards "
+                     "%.4g of the load: ",
+                     failed.inverting_fraction) +
+              failed.inverting_text + ")";
+    text += "; the last one: " + stats.failure;
+    // Measured on the stability matrix (doc/benchmarks.md, section 4):
+    // every P1 case converged with the shift. Not where the last increment
+    // failed because its steps invert cells (P2 at gravity x 10: the shift
+    // only took longer to fail).
+    if (parameters.discretization.tangent == TangentType::adaptive &&
+        parameters.solver.tangent_shift == 0 && failed.inverting == 0)
+      text += " (Solver/Tangent shift = 1e-3 may help)";
+    return text;
+  }
+
   SolveStatistics
   ForwardProblem::solve(const LoadState &target_load, const VectorType &rest)
   {
@@ -437,17 +565,21 @@ namespace RestShape
     VectorType            d_converged = d;
     LoadSteps             steps{0, 1. / parameters.solver.initial_load_steps};
     unsigned int          halvings = 0;
+    FailedAttempts        failed;
     ContactProblem::State contact_converged;
     if (contact != nullptr)
       contact_converged = contact->state();
 
+    const auto set_fraction = [&](const double s) {
+      current_load = between(start_load, target_load, s);
+      w            = w_start;
+      w.sadd(1 - s, s, rest);
+      w_ghost = w;
+    };
     while (steps.done < 1)
       {
         const double s = steps.next();
-        current_load   = between(start_load, target_load, s);
-        w              = w_start;
-        w.sadd(1 - s, s, rest);
-        w_ghost = w;
+        set_fraction(s);
         if (s < 1 || steps.increment < 1)
           pcout << "    Load step to " << format("%.4f", s) << std::endl;
 
@@ -460,6 +592,7 @@ namespace RestShape
             ++stats.load_steps;
             continue;
           }
+        failed.add(s, stats.cells_inverted, inverted_cells_text());
         // Back to the last equilibrium, smaller increment.
         d       = d_converged;
         d_ghost = d;
@@ -467,22 +600,10 @@ namespace RestShape
           contact->set_state(contact_converged);
         if (++halvings > parameters.solver.max_load_step_halvings)
           {
-            current_load = between(start_load, target_load, steps.done);
-            w            = w_start;
-            w.sadd(1 - steps.done, steps.done, rest);
-            w_ghost = w;
-            stats.failure += "; gave up after " + std::to_string(halvings - 1) +
-                             " halvings of the load increment at " +
-                             format("%.4f", steps.done) + " of the full load";
-            // Measured on the stability matrix (doc/benchmarks.md,
-            // section 4): every P1 case converged with the shift. Not where
-            // the last increment failed because its steps invert cells (P2
-            // at gravity x 10: the shift only took longer to fail).
-            if (parameters.discretization.tangent == TangentType::adaptive &&
-                parameters.solver.tangent_shift == 0 && !stats.cells_inverted)
-              stats.failure += " (Solver/Tangent shift = 1e-3 may help)";
-            pcout << "    Newton failed: " << stats.failure << std::endl;
+            set_fraction(steps.done);
             stats.fraction = steps.done;
+            stats.failure  = give_up_text(stats, failed, halvings);
+            pcout << "    Newton failed: " << stats.failure << std::endl;
             return stats;
           }
         pcout << "    Newton failed (" << stats.failure

@@ -132,6 +132,42 @@ namespace RestShape
     return result;
   }
 
+  ForwardProblem::Compression
+  ForwardProblem::most_compressed_cell() const
+  {
+    FEValues<3> fe_values(*mapping_, fe_, cell_quadrature, update_gradients);
+    std::vector<Tensor2> grad_d(cell_quadrature.size()),
+      grad_w(cell_quadrature.size());
+    const FEValuesExtractors::Vector u(0);
+    const Tensor2                    I = unit_symmetric_tensor<3>();
+    Compression                      mine;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_gradients(d_ghost, grad_d);
+          fe_values[u].get_function_gradients(w_ghost, grad_w);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const double det_F =
+                determinant(I + grad_d[q]) / determinant(I + grad_w[q]);
+              if (det_F < mine.det_F)
+                {
+                  mine.det_F = det_F;
+                  mine.where =
+                    cell_location_text(cell->material_id(), cell->center());
+                }
+            }
+        }
+    Compression result;
+    for (const auto &[det_F, where] :
+         Utilities::MPI::all_gather(comm,
+                                    std::make_pair(mine.det_F, mine.where)))
+      if (det_F < result.det_F)
+        result = {det_F, where};
+    return result;
+  }
+
   Tensor<1, 3>
   ForwardProblem::support_reaction() const
   {

@@ -173,14 +173,16 @@ namespace RestShape
   }
 
   void
-  LinearSolver::solve_prepared(VectorType &x, const VectorType &b)
+  LinearSolver::solve_prepared(VectorType       &x,
+                               const VectorType &b,
+                               const double      tolerance)
   {
     AssertThrow(last_matrix != nullptr,
                 ExcMessage("solve_prepared() needs a solve or prepare first"));
     if (!solves_prepared_exactly())
       {
         x = 0;
-        solve_iteratively(*last_matrix, x, b, prepared_solve_tolerance);
+        solve_iteratively(*last_matrix, x, b, tolerance);
         return;
       }
     AssertThrow(direct_solver != nullptr,
@@ -251,6 +253,11 @@ namespace RestShape
 
   namespace
   {
+    /// GMRES preconditioned from the right: it then measures the residual
+    /// itself, not the preconditioned one (which a poor AMG can make look
+    /// converged after one iteration).
+    constexpr bool right_preconditioning = true;
+
     /// CG iterations per decade of residual reduction of a finished solve
     /// (0 if it reduced the residual too little to tell).
     double
@@ -330,7 +337,9 @@ namespace RestShape
         else
           {
             SolverGMRES<VectorType> gmres(
-              control, SolverGMRES<VectorType>::AdditionalData(200));
+              control,
+              SolverGMRES<VectorType>::AdditionalData(200,
+                                                      right_preconditioning));
             gmres.solve(A, x, b, *amg);
             last_method = "GMRES+AMG";
           }
@@ -362,7 +371,8 @@ namespace RestShape
     try
       {
         SolverGMRES<VectorType> gmres(
-          gmres_control, SolverGMRES<VectorType>::AdditionalData(200));
+          gmres_control,
+          SolverGMRES<VectorType>::AdditionalData(200, right_preconditioning));
         gmres.solve(A, x, b, *amg);
       }
     catch (const SolverControl::NoConvergence &exc)

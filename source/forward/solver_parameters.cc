@@ -113,17 +113,21 @@ namespace RestShape
                       "steps at the full load invert cells.");
     prm.declare_entry(
       "Check stability",
-      "false",
-      Patterns::Bool(),
-      "After the final equilibrium of every refinement cycle (and of an "
-      "inverse iteration that stops unconverged), compute the smallest "
+      "auto",
+      Patterns::Selection("auto|true|false"),
+      "After the final equilibrium (of the last refinement cycle, and of "
+      "an inverse iteration that stops unconverged), compute the smallest "
       "eigenvalues of the constrained tangent against the lumped mass "
       "(1/s^2; shift-invert Lanczos) and the number of negative ones "
-      "found, reported in summary.json. An "
-      "unstable equilibrium (a negative eigenvalue: a column above its "
-      "buckling height, a body free to turn under gravity) stops the run "
-      "with its mode. Needs Linear solver = direct and a symmetric "
-      "tangent.");
+      "found, reported in summary.json. An unstable equilibrium (a "
+      "negative eigenvalue: a column above its buckling height, a body "
+      "free to turn under gravity) stops the run with its mode. auto: "
+      "wherever the tangent is symmetric (the check is a question of the "
+      "energy), with exact solves by the direct solver or, with cg-amg, a "
+      "bounded variant (10 Lanczos steps with CG solves to 1e-3); the run "
+      "and summary.json say when and why it was not run. true: the same, "
+      "and an input error where the tangent is not symmetric (a follower "
+      "pressure on a surface with free edges). false: never.");
     prm.leave_subsection();
   }
 
@@ -148,13 +152,10 @@ namespace RestShape
     tangent_shift             = prm.get_double("Tangent shift");
     max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
     initial_load_steps        = prm.get_integer("Initial load steps");
-    check_stability           = prm.get_bool("Check stability");
-    if (check_stability && linear_solver == LinearSolverType::cg_amg)
-      throw InputError("",
-                       "Solver/Check stability",
-                       "the stability check needs a direct factorisation "
-                       "(shift-invert); expected Solver/Linear solver = "
-                       "direct or auto");
+    const std::string stability = prm.get("Check stability");
+    check_stability = stability == "auto" ? StabilityCheck::automatic :
+                      stability == "true" ? StabilityCheck::on :
+                                            StabilityCheck::off;
     prm.leave_subsection();
     if (!(newton_tolerance > 0))
       throw InputError("",

@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <restshape/base/input_error.h>
 #include <restshape/inverse/direct_inverse.h>
 
 #include <algorithm>
@@ -125,7 +126,7 @@ namespace RestShape
         if (++failed == max_failed_load_steps)
           {
             result.failure += "; gave up after " + std::to_string(failed) +
-                              " failed load steps, at " + std::to_string(done) +
+                              " failed load steps, at " + number_text(done) +
                               " of the load";
             return result;
           }

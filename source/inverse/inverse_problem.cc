@@ -1,4 +1,6 @@
+#include <restshape/base/input_error.h>
 #include <restshape/inverse/inverse_problem.h>
+#include <restshape/inverse/load_path.h>
 
 #include <cstdio>
 
@@ -8,6 +10,11 @@ namespace RestShape
 
   namespace
   {
+    /// A load path that strains the fixed labels' faces by more than this
+    /// (force / (area E)) holds no rest shape: the co-rotational law
+    /// inverts a cell compressed by a strain of 1.
+    constexpr double max_support_strain = 1;
+
     std::string
     mm(const double metres)
     {
@@ -437,6 +444,24 @@ namespace RestShape
   {
     InverseResult result;
     history.clear();
+    // The fixed point's forward solves follow the one-sided rule: a rest
+    // shape may lie beyond the obstacle. Forward simulations after the
+    // inverse (stability, comparisons) do not.
+    struct OneSided
+    {
+      ContactProblem *contact;
+      OneSided(ContactProblem *c)
+        : contact(c)
+      {
+        if (contact != nullptr)
+          contact->set_one_sided(true);
+      }
+      ~OneSided()
+      {
+        if (contact != nullptr)
+          contact->set_one_sided(false);
+      }
+    } one_sided(contact);
     const LoadState load = forward.scene_load();
     set_admissible_target(result);
     // An equilibrium x at the admissible target has det(dx/dX_mesh) =
@@ -453,16 +478,44 @@ namespace RestShape
                       "cells are thick: projected onto it and smoothed, their "
                       "surface nodes still pass their inner ones; move the "
                       "obstacle out or refine the mesh near it)");
+    // Whether anything can hold the target: a load that only the fixed
+    // labels can carry, and that strains them beyond what the law carries,
+    // is the likely cause when the direct inverse fails (the fixed point
+    // would then only wander: on a brain held by a stalk, 900 Newton steps
+    // in 33 minutes).
+    const LoadPath path   = assess_load_path(forward, contact, load);
+    const bool overloaded = path.assessed && path.strain > max_support_strain;
+    if (path.assessed)
+      pcout << "Load path at the target: " << path.text() << std::endl;
+    const auto load_path_failure = [&](const std::string &what) {
+      return what +
+             "; the load path at the target explains it: " + path.text() +
+             ", more than the tissue can carry (a strain of " +
+             number_text(max_support_strain) + " inverts cells); expected " +
+             LoadPath::remedy();
+    };
+    const bool direct = parameters.method == InverseParameters::Method::direct;
+    if (overloaded && !direct)
+      return finish(result,
+                    load_path_failure("no rest shape sought: the fixed point "
+                                      "would not settle"));
     // Method = direct: the fixed point starts from the direct inverse's
     // rest shape, Newton from the target at the full load.
     VectorType        direct_rest, target_guess;
     const VectorType *rest = &initial_rest;
-    if (parameters.method == InverseParameters::Method::direct &&
-        direct_inverse(initial_rest, load, result, direct_rest))
+    if (direct)
       {
-        rest         = &direct_rest;
-        target_guess = forward.zero_vector();
-        guess        = &target_guess;
+        if (direct_inverse(initial_rest, load, result, direct_rest))
+          {
+            rest         = &direct_rest;
+            target_guess = forward.zero_vector();
+            guess        = &target_guess;
+          }
+        else if (overloaded)
+          return finish(result,
+                        load_path_failure("no rest shape found: the direct "
+                                          "inverse failed (" +
+                                          result.direct.failure + ")"));
       }
     VectorType      start;
     SolveStatistics stats = first_solve(*rest, guess, load, result, start);

@@ -85,7 +85,14 @@ namespace RestShape
                   double(stats.linear_iterations) /
                     std::max(1u, stats.newton_iterations));
     if (!p.inverse.enabled)
-      summary.set("relative_residual", stats.residual / stats.reference);
+      {
+        // The residual reached, and whether it met the tolerance or Newton
+        // stopped at the measured round-off level of the state above it.
+        summary.set("relative_residual", stats.residual / stats.reference);
+        summary.set("newton_tolerance_met", !stats.at_round_off);
+        if (stats.at_round_off)
+          summary.set("round_off_level_relative", stats.round_off);
+      }
     summary.set("max_displacement_mm", r.max_displacement_mm);
     summary.set("mean_displacement_mm", r.mean_displacement_mm);
     summary.set("potential_energy_J", in.forward.potential_energy());

@@ -92,6 +92,10 @@ namespace RestShape
     /// the equilibrium of the cycle is unstable.
     void
     check_stability_of_equilibrium(const SolveStatistics &stats);
+    /// Why the stability check does not run ("" if it does): Check
+    /// stability = false, or a tangent that is not symmetric.
+    std::string
+    stability_not_checked_because() const;
     void
     compare_prestress();
     void

@@ -48,6 +48,15 @@ namespace RestShape
     cg_amg
   };
 
+  /// Solver/Check stability: where the tangent is symmetric (auto), always
+  /// (on: an input error where it is not), never (off).
+  enum class StabilityCheck
+  {
+    automatic,
+    on,
+    off
+  };
+
   /// Linear solver = auto: the direct solver up to this many DoFs.
   constexpr unsigned int auto_direct_dofs = 20000;
 
@@ -142,11 +151,11 @@ namespace RestShape
     double amg_aggregation_threshold;
     /// Smoothed aggregation (ML's default prolongator) or plain
     /// (unsmoothed) aggregation: a third of the memory, more CG iterations.
-    bool         amg_smoothed_aggregation = false;
-    double       tangent_shift; // relative; 0: off
-    unsigned int max_load_step_halvings;
-    unsigned int initial_load_steps;
-    bool         check_stability = false; // smallest eigenvalues at the end
+    bool           amg_smoothed_aggregation = false;
+    double         tangent_shift; // relative; 0: off
+    unsigned int   max_load_step_halvings;
+    unsigned int   initial_load_steps;
+    StabilityCheck check_stability = StabilityCheck::automatic;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -37,10 +37,13 @@ namespace RestShape
    * holds the planes of both faces, two constraints, and slides along the
    * crease; in a corner, three.
    *
-   * One-sided rule (Morin et al. 2015): a node is eligible once it has been
-   * on the allowed side (g >= -g_tol) during the solve, or once a Newton step
-   * carried it through the allowed region and out again; a node that starts a
-   * solve on the wrong side is free until then.
+   * In a forward simulation every candidate is eligible: a node that
+   * starts beyond the obstacle is brought onto it. One-sided rule of the
+   * inverse iteration (Morin et al. 2015; set_one_sided()): a node is
+   * eligible once it has been on the allowed side (g >= -g_tol) during the
+   * solve, or once a Newton step carried it through the allowed region and
+   * out again; a node that starts a solve on the wrong side is free until
+   * then (a rest shape may lie beyond the skull).
    */
   class ContactProblem
   {
@@ -78,6 +81,12 @@ namespace RestShape
     VectorType
     admissible_target_shift() const;
 
+    /// The inward normals (towards the allowed side) of the candidates that
+    /// touch the obstacle or lie beyond it in the mesh geometry (the
+    /// contact nodes of the admissible target), from every rank.
+    std::vector<dealii::Tensor<1, 3>>
+    target_normals() const;
+
     /// The obstacle's surface.
     const Obstacle &
     surface() const
@@ -88,6 +97,19 @@ namespace RestShape
     /// A new solve starts from displacement @p d (ghosted).
     void
     begin_solve(const VectorType &d);
+
+    /// The one-sided rule of the inverse iteration on (the solves of the
+    /// fixed point) or off (forward simulations: the default).
+    void
+    set_one_sided(const bool on)
+    {
+      one_sided = on;
+    }
+    bool
+    is_one_sided() const
+    {
+      return one_sided;
+    }
 
     /// The active and eligible flags of every candidate: saved with an
     /// equilibrium, restored with it when a step is taken back.
@@ -171,6 +193,22 @@ namespace RestShape
     enforce_conditions(const ContactConditions &violated,
                        const VectorType        &raw_residual,
                        const double             force_tolerance);
+
+    /**
+     * Whether the rounds of enforce_conditions() cycle ("" while they do
+     * not, else what repeats): a converged state (active nodes, held
+     * planes, violations) came back in a later round of this solve. Newton
+     * then fails, and load stepping takes a smaller increment. (Nodes that
+     * an earlier round released for pulling and that come back and are
+     * released again end the free phases: from then on nodes are released
+     * only once Newton has converged.)
+     */
+    const std::string &
+    cycle_text() const
+    {
+      return cycle;
+    }
+
 
     /// Why the contact conditions are not met at the state of the last
     /// update (nodes through the obstacle, active nodes off it, the largest
@@ -261,6 +299,12 @@ namespace RestShape
       bool   eligible    = false;
       bool   active      = false;
       bool   pulled      = false; // released by thaw_if_adhesive()
+      /// Released by enforce_conditions() in this solve (a repeat is a
+      /// cycle of its rounds).
+      bool strictly_released = false;
+      /// Carried off the surface by its planes: it follows the surface's
+      /// distance along their mean normal for the rest of the solve.
+      bool follow_surface = false;
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its
       /// pull accepted (not released again in this solve).
@@ -333,6 +377,13 @@ namespace RestShape
                           const dealii::AffineConstraints<double> &base) const;
     void
     share_flags();
+    /// The bit of share_flags() for Candidate::follow_surface (above the
+    /// active, eligible and dropped-plane bits).
+    static constexpr int follow_surface_flag = 32;
+    /// Let the node follow the surface along its held planes' mean normal
+    /// for the rest of the solve (Candidate::follow_surface).
+    static void
+    follow_surface(Candidate &c);
     /// Contact pressure of every candidate (Pa; 0 where inactive).
     std::vector<double>
     pressures(const VectorType &raw_residual) const;
@@ -356,8 +407,22 @@ namespace RestShape
     std::set<std::size_t>  history;
     double                 h_min           = 0;
     bool                   releases_frozen = false;
-    unsigned int           n_updates = 0, n_thaws = 0;
-    unsigned int           n_added = 0, n_released = 0;
+    bool                   one_sided       = false;
+    /// Constraints changed outside update_active_set() (a thaw, a round
+    /// of enforce_conditions()) since the last update.
+    bool         constraints_changed = false;
+    unsigned int n_updates = 0, n_thaws = 0;
+    /// Active-set updates of the current free phase (Free active-set
+    /// updates, doubled for each round of enforce_conditions() that
+    /// repeats an earlier one) and the description of a cycle.
+    unsigned int free_updates = 0;
+    std::string  cycle;
+    /// Signatures of the converged states of this solve's rounds.
+    std::set<std::size_t> rounds;
+    /// The active nodes (with their held planes) and the violations.
+    std::size_t
+                 round_signature(const ContactConditions &violated) const;
+    unsigned int n_added = 0, n_released = 0;
   };
 } // namespace RestShape
 

@@ -26,6 +26,7 @@
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,8 +60,18 @@ namespace RestShape
     /// the load-step halvings ran out part of the way (0: not even the
     /// smallest increment converged).
     double fraction = 0;
-    /// |R|/|f| after every accepted Newton step of the last load step.
+    /// |R|/|f| after every accepted Newton step of the last load step
+    /// since its constraints (the active contact set) last changed.
     std::vector<double> residual_history;
+    /// The round-off level of |R|/|f| where it was measured (a stalled
+    /// step; 0: not measured since the constraints last changed).
+    double round_off = 0;
+    /// |K delta - b| of the last Newton step's linear system (N; direct
+    /// solver only): the floor of what that step could reach.
+    double linear_residual = 0;
+    /// Newton converged at that level, above the Newton tolerance (which
+    /// was then not met).
+    bool at_round_off = false;
   };
 
   /// The load increments of ForwardProblem::solve(), as fractions of the
@@ -280,6 +291,16 @@ namespace RestShape
     /// one value per active cell (zero on cells not owned here).
     dealii::Vector<float>
     von_mises_stress() const;
+    /// The smallest det F (volume ratio of the current state to the rest
+    /// shape) over all quadrature points, and where ("label 1 at (x, y, z)
+    /// mm of the mesh").
+    struct Compression
+    {
+      double      det_F = std::numeric_limits<double>::max();
+      std::string where;
+    };
+    Compression
+    most_compressed_cell() const;
     /// Total external force of @p load (N): the weight (less the buoyancy
     /// with Fluid load = buoyancy) plus surface_force().
     dealii::Tensor<1, 3>
@@ -342,10 +363,13 @@ namespace RestShape
     void
     prepare_consistent_tangent();
     /// Solve K x = b with the tangent of prepare_consistent_tangent():
-    /// exactly with the direct solver, with CG + AMG to a relative
-    /// tolerance of LinearSolver::prepared_solve_tolerance.
+    /// exactly with the direct solver, with CG + AMG to the relative
+    /// tolerance @p tolerance.
     void
-    solve_with_tangent(VectorType &x, const VectorType &b);
+    solve_with_tangent(
+      VectorType       &x,
+      const VectorType &b,
+      const double      tolerance = LinearSolver::prepared_solve_tolerance);
     /// Whether solve_with_tangent() solves exactly (the direct solver).
     bool
     tangent_solves_are_exact() const;
@@ -411,7 +435,10 @@ namespace RestShape
     enum class Assemble
     {
       residual,
-      residual_and_matrix
+      residual_and_matrix,
+      /// The residual, and into magnitude_buffer the sum of the absolute
+      /// values of its internal and body-force terms (their round-off).
+      residual_and_magnitudes
     };
 
     void
@@ -426,6 +453,10 @@ namespace RestShape
     /// conservative and its assembled tangent symmetric.
     bool
     pressure_surface_is_closed_or_held() const;
+    /// Whether @p dof is fixed, or a hanging DoF whose constraint involves
+    /// fixed DoFs only.
+    bool
+    is_held(const dealii::types::global_dof_index dof) const;
     /// The mass density (kg/m^3) on which the body acceleration acts in
     /// @p cell: reduced by the fluid's with Fluid load = buoyancy, times the
     /// mesh's mass ratio (LabelledMesh::mass_ratio()).
@@ -512,6 +543,35 @@ namespace RestShape
                 const double reference,
                 const bool   set_changed);
 
+    /// The failed Newton attempts of a load-stepped solve: how many, and
+    /// those whose steps inverted cells (the smallest load fraction among
+    /// them, and one of the cells).
+    struct FailedAttempts
+    {
+      unsigned int count = 0, inverting = 0;
+      double       inverting_fraction = 0;
+      std::string  inverting_text;
+      void
+      add(const double fraction, const bool inverted, const std::string &text)
+      {
+        ++count;
+        if (!inverted || (inverting > 0 && fraction >= inverting_fraction))
+          {
+            inverting += inverted;
+            return;
+          }
+        ++inverting;
+        inverting_fraction = fraction;
+        inverting_text     = text;
+      }
+    };
+    /// Why solve() gives up: the physical cause where the attempts
+    /// inverted cells, the last failure otherwise, the load fraction
+    /// reached and the most compressed cell of its equilibrium.
+    std::string
+    give_up_text(const SolveStatistics &stats,
+                 const FailedAttempts  &failed,
+                 const unsigned int     halvings) const;
     /// The progress line of Newton step @p it.
     void
     print_newton_step(const unsigned int      it,
@@ -529,6 +589,17 @@ namespace RestShape
     contact_conditions_hold(SolveStatistics &stats,
                             const double     reference,
                             unsigned int    &corrections);
+    /**
+     * The round-off level of the residual at the current state (N): the
+     * change of the residual when every free displacement moves by the
+     * smallest amount the state resolves (an ulp of d, or eps h_min, where
+     * F = I + grad d stops resolving it), less the tangent's linear response
+     * to that move. What remains is the noise of evaluating the residual,
+     * below which no Newton step can bring it. Needs the tangent of the
+     * current state; one residual assembly; the assembled vectors are kept.
+     */
+    double
+    measure_round_off();
     /// Scale the tangent's diagonal by (1 + @p mu) (Solver/Tangent shift).
     void
     shift_diagonal(const double mu);
@@ -572,8 +643,9 @@ namespace RestShape
     // and copies the sums into the Trilinos vectors above.
     using BufferType = dealii::LinearAlgebra::distributed::Vector<double>;
     BufferType d_buffer, w_buffer;
-    BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer;
-    double     total_energy = 0; // of the last assembly (J)
+    BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
+      magnitude_buffer;
+    double total_energy = 0; // of the last assembly (J)
     // The last assembly that met an inverted cell (det F <= 0 or det G <=
     // 0 at a quadrature point): how many, and one of them (label, centre
     // in the mesh, m), summed and chosen over all ranks. Assemblies without

@@ -81,11 +81,14 @@ namespace RestShape
     /**
      * Solve A x = b with the matrix of the last solve() or prepare(): the
      * direct solver with its factorisation (exact), CG + AMG to the
-     * relative tolerance prepared_solve_tolerance (an inexact solve, for
-     * preconditioners inside a flexible Krylov method).
+     * relative tolerance @p tolerance (by default prepared_solve_tolerance:
+     * an inexact solve, for preconditioners inside a flexible Krylov
+     * method).
      */
     void
-    solve_prepared(VectorType &x, const VectorType &b);
+    solve_prepared(VectorType       &x,
+                   const VectorType &b,
+                   const double      tolerance = prepared_solve_tolerance);
 
     /// Whether solve_prepared() solves exactly (the direct solver).
     bool

@@ -32,6 +32,12 @@ namespace RestShape
     /// Where the softest mode is largest: mesh position (m) and label.
     dealii::Point<3> peak;
     Label            label = 0;
+    /// Solves by the direct solver (else inexact CG solves: a bounded
+    /// variant).
+    bool exact_solves = true;
+    /// How it was computed, for a bounded variant ("" with exact solves).
+    std::string
+    variant_text() const;
 
     bool
     stable() const
@@ -46,8 +52,9 @@ namespace RestShape
   /**
    * Shift-invert Lanczos (K^-1 M, 40 steps with full re-orthogonalisation,
    * one factorisation) at the current equilibrium of @p forward: the
-   * eigenvalues nearest zero on both sides. Needs the direct solver and a
-   * symmetric tangent.
+   * eigenvalues nearest zero on both sides. With CG + AMG: a bounded
+   * variant (fewer steps, inexact inner solves; variant_text()). Needs a
+   * symmetric tangent. Throws SolverFailure if an inner solve fails.
    */
   StabilityResult
   check_stability(ForwardProblem &forward);
