@@ -205,7 +205,12 @@ def tracts(heterogeneous, uniform):
     rest_b = vtk_to_numpy(b.GetPointData().GetArray('rest_position_mm'))
     shift = numpy.linalg.norm(rest_a - rest_b, axis=1)
     correction = magnitude(a, 'rest_position_mm', 'target_position_mm')
-    label = vtk_to_numpy(a.GetPointData().GetArray('label'))
+    # label is cell data; each cell has points of its own (deal.II writes
+    # a patch per cell), so the point value is the cell's.
+    to_points = vtk.vtkCellDataToPointData()
+    to_points.SetInputData(a)
+    to_points.Update()
+    label = vtk_to_numpy(to_points.GetOutput().GetPointData().GetArray('label'))
     section = 2.0  # mm: through the body of the corpus callosum
     front = dict(direction=(0, -1, 0), view_up=(0, 0, 1))
     render_panels([('labels, coronal section y = %g mm (tracts: 5)' % section,

@@ -1,8 +1,8 @@
 #!/bin/bash
 # Scene test: run restshape on tests/scenes/NAME.prm and compare every file of
 # tests/scenes/NAME.expected/ with the same file of the output, with numdiff.
-# Timing fields (JSON keys and CSV columns containing "seconds") are dropped
-# before the comparison. Tolerances: tests/scenes/NAME.numdiff (numdiff
+# Timing fields (JSON keys and CSV columns containing "seconds") and the
+# version and git revision of the build are dropped before the comparison. Tolerances: tests/scenes/NAME.numdiff (numdiff
 # options), default "-a 1e-8 -r 1e-6" (a field passes if either holds).
 #
 # usage: run_scene.sh RESTSHAPE NAME OUTPUT_DIRECTORY [--set ...]
@@ -30,7 +30,7 @@ fi
 
 drop_timing() {
   case "$1" in
-  *.json) grep -v 'seconds' "$1" ;;
+  *.json) grep -v -E 'seconds|"restshape_version"|"git_revision"' "$1" ;;
   *.csv)
     awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i !~ /seconds/) }
              { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line (line == "" ? "" : ",") $i; print line }' "$1"

@@ -3,7 +3,10 @@
 # inverse column (exact rest shape known) runs every combination in its own
 # folder and writes one table: 4 rows, all converged, the exact rest-shape
 # errors falling with refinement for both degrees, P2 at least 100 times as
-# accurate as P1 on the same mesh, and the plot.
+# accurate as P1 on the same mesh, the direct inverse's Newton steps
+# counted, each run's rest shape against the finest run's (P1 farther from
+# it than P2 on the same mesh), a point per run in the plot, and one line
+# per run started and finished.
 #
 # usage: run_study.sh RESTSHAPE OUTPUT_DIRECTORY
 set -eu
@@ -20,10 +23,18 @@ csv=$out/study/study.csv
   { echo "FAIL: no folder per run"; exit 1; }
 awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
   { ++n; conv = conv && $col["converged"] == "true"
-    e[$col["Polynomial degree"], $col["Global refinements"]] = $col["rest_l2_error_relative"] }
-  BEGIN { conv = 1 }
+    steps = steps && $col["direct_inverse_newton_steps"] > 0
+    p = $col["Polynomial degree"]; r = $col["Global refinements"]
+    e[p, r] = $col["rest_l2_error_relative"]; d[p, r] = $col["rest_shape_difference_to_finest"] }
+  BEGIN { conv = 1; steps = 1 }
   END {
-    ok = n == 4 && conv && e[1,1] < e[1,0] && e[2,1] < e[2,0] && 100 * e[2,0] < e[1,0]
-    printf "rows %d, converged %d, L2: P1 %g -> %g, P2 %g -> %g\n", n, conv, e[1,0], e[1,1], e[2,0], e[2,1]
+    ok = n == 4 && conv && steps && e[1,1] < e[1,0] && e[2,1] < e[2,0] && 100 * e[2,0] < e[1,0] &&
+      d[2,1] == "reference" && d[2,0] < d[1,0] && d[1,1] < d[1,0]
+    printf "rows %d, converged %d, direct inverse steps counted %d, L2: P1 %g -> %g, P2 %g -> %g; ", n, conv, steps, e[1,0], e[1,1], e[2,0], e[2,1]
+    printf "rest shape vs finest: P1 %g -> %g, P2 %g\n", d[1,0], d[1,1], d[2,0]
     exit ok ? 0 : 1 }' "$csv" || { echo "FAIL: study table"; cat "$csv"; exit 1; }
+[ "$(grep -c '<circle' "$out/study/study_error_vs_time.svg")" -eq 4 ] ||
+  { echo "FAIL: not one point per run in the plot"; exit 1; }
+[ "$(grep -c 'started: ' "$out.log")" -eq 4 ] && [ "$(grep -c 'finished: converged, .* DoFs' "$out.log")" -eq 4 ] ||
+  { echo "FAIL: not one line per run started and finished"; exit 1; }
 echo ok

@@ -4,7 +4,7 @@ usage: python3 benchmarks/scaling/cell_volume.py SOLUTION.vtu [N]
 
 Reads a deal.II VTU written by RestShape with P1 tetrahedra (4 points per
 cell, on the deformed geometry, with the point field displacement_<unit>
-and the cell field von_mises_Pa), computes J of every cell from its
+and the cell data von_mises_Pa and label, one value per cell), computes J of every cell from its
 deformed and rest volumes, and prints one line: the number of cells, the
 smallest J, the 1st percentile and median of J, the largest and 99th
 percentile von Mises stress (Pa); then the N (default 5) most compressed
@@ -67,7 +67,7 @@ def main():
     labels = arrays["label"].ravel() if "label" in arrays else None
     for i in np.argsort(J)[:shown]:
         print("  J %.4f at (%.1f, %.1f, %.1f), label %s"
-              % (J[i], *centroids[i], "?" if labels is None else "%g" % labels[4 * i]))
+              % (J[i], *centroids[i], "?" if labels is None else "%d" % labels[i]))
 
 
 if __name__ == "__main__":

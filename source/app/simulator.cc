@@ -3,6 +3,7 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/version.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
@@ -282,6 +283,8 @@ namespace RestShape
                                             parameters.mesh.length_unit,
                                             comm);
     output->write_text("parameters.prm", [&](std::ostream &out) {
+      out << "# The effective parameters of a run of "
+          << version_text("restshape") << "\n";
       prm.print_parameters(out, ParameterHandler::PRM);
     });
     // The name of each value of the VTU's label field.
@@ -334,17 +337,19 @@ namespace RestShape
                            const VectorType  &initial_rest,
                            const VectorType  *guess)
   {
-    InverseProblem inverse(parameters.inverse,
-                           *forward,
-                           contact.get(),
-                           parameters.output.write_vtu ? output.get() : nullptr,
-                           timer,
-                           pcout,
-                           wall_timer);
-    inverse_result = inverse.run(initial_rest, next_step, guess);
-    next_step += inverse.records().size();
+    inverse        = std::make_unique<InverseProblem>(parameters.inverse,
+                                               *forward,
+                                               contact.get(),
+                                               parameters.output.write_vtu ?
+                                                        output.get() :
+                                                        nullptr,
+                                               timer,
+                                               pcout,
+                                               wall_timer);
+    inverse_result = inverse->run(initial_rest, next_step, guess);
+    next_step += inverse->records().size();
 
-    for (const InverseIterationRecord &r : inverse.records())
+    for (const InverseIterationRecord &r : inverse->records())
       iteration_rows.push_back({double(r.iteration),
                                 r.mean_error * 1e3,
                                 r.max_error * 1e3,

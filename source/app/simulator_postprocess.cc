@@ -5,6 +5,7 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/version.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
@@ -29,6 +30,12 @@ namespace RestShape
       TimerOutput::Scope scope(timer, "Error estimate");
       estimate = estimate_error(*forward, u, parameters.refinement.estimator);
     }
+    if (inverse)
+      {
+        TimerOutput::Scope scope(timer, "Output");
+        inverse->rewrite_final_output(
+          {{"estimated_error", estimate.indicators}});
+      }
     if (postprocessors.empty())
       postprocessors = make_postprocessors(parameters, next_step);
     const PostprocessInput in{parameters,
@@ -62,6 +69,8 @@ namespace RestShape
         summary.set("newton_iterations", long(stats.newton_iterations));
       }
     summary.set("wall_seconds", wall_timer.wall_time());
+    summary.set("restshape_version", std::string(version()));
+    summary.set("git_revision", std::string(git_revision()));
     output->write_text("summary.json",
                        [&](std::ostream &out) { summary.write(out); });
   }

@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <restshape/app/scene_input.h>
 #include <restshape/app/study.h>
+#include <restshape/app/study_compare.h>
 #include <restshape/app/study_plot.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
@@ -22,11 +23,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 extern char **environ;
 
@@ -116,12 +119,29 @@ namespace RestShape
       return name.str();
     }
 
+    /// While a run goes on, a progress line this often (s).
+    constexpr double heartbeat_seconds = 60;
+
+    /// The last non-empty line of the file @p log ("" if none).
+    std::string
+    last_line(const std::string &log)
+    {
+      std::ifstream in(log);
+      std::string   line, last;
+      while (std::getline(in, line))
+        if (!line.empty())
+          last = line;
+      return last;
+    }
+
     /// Run @p program with @p args, stdout and stderr to @p log; its exit
-    /// code, wall seconds and peak memory (MB).
+    /// code, wall seconds and peak memory (MB). Every heartbeat_seconds,
+    /// the run's last line of screen output, prefixed with @p name.
     void
     spawn(const std::string              &program,
           const std::vector<std::string> &args,
           const std::string              &log,
+          const std::string              &name,
           StudyRun                       &run)
     {
       std::vector<char *> argv = {const_cast<char *>(program.c_str())};
@@ -134,63 +154,96 @@ namespace RestShape
         &actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       posix_spawn_file_actions_adddup2(&actions, 1, 2);
       const auto start = std::chrono::steady_clock::now();
-      pid_t      pid   = 0;
-      const int  error = posix_spawn(
+      const auto since = [&start]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+          .count();
+      };
+      pid_t     pid   = 0;
+      const int error = posix_spawn(
         &pid, program.c_str(), &actions, nullptr, argv.data(), environ);
       posix_spawn_file_actions_destroy(&actions);
       if (error != 0)
         throw InputError("", "--study", "cannot start " + program);
       int           status = 0;
       struct rusage usage;
-      wait4(pid, &status, 0, &usage);
-      run.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
+      double        next_report = heartbeat_seconds;
+      while (wait4(pid, &status, WNOHANG, &usage) == 0)
+        {
+          std::this_thread::sleep_for(std::chrono::milliseconds(200));
+          if (since() < next_report)
+            continue;
+          std::cout << "  " << name << ": running for " << std::fixed
+                    << std::setprecision(0) << since() << std::defaultfloat
+                    << " s: " << last_line(log) << std::endl;
+          next_report += heartbeat_seconds;
+        }
+      run.seconds   = since();
       run.memory_mb = usage.ru_maxrss / 1024.;
       run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 3;
     }
 
-    /// The error columns the runs report (exact errors first).
+    /// The columns of @p keys that some run reports.
     std::vector<std::string>
-    error_keys(const std::vector<StudyRun> &runs)
+    reported(const std::vector<StudyRun>    &runs,
+             const std::vector<std::string> &keys)
     {
-      std::vector<std::string> keys;
-      for (const std::string key : {"rest_l2_error_relative",
-                                    "rest_h1_error_relative",
-                                    "l2_error_relative",
-                                    "h1_error_relative",
-                                    "mean_error_mm",
-                                    "max_error_mm"})
+      std::vector<std::string> result;
+      for (const std::string &key : keys)
         for (const StudyRun &run : runs)
           if (run.number(key))
             {
-              keys.push_back(key);
+              result.push_back(key);
               break;
             }
-      return keys;
+      return result;
     }
 
-    /// Relative difference of the largest displacement from the run with
-    /// the most DoFs (the reference where no exact error is known).
-    std::vector<std::optional<double>>
-    difference_to_finest(const std::vector<StudyRun> &runs)
+    /// Errors against an exact solution (Verification), finest first.
+    const std::vector<std::string> exact_error_keys = {"rest_l2_error_relative",
+                                                       "rest_h1_error_relative",
+                                                       "l2_error_relative",
+                                                       "h1_error_relative"};
+
+    /// The reference of the comparison: the converged run with the most
+    /// DoFs (the last of equals).
+    std::size_t
+    finest_run(const std::vector<StudyRun> &runs)
     {
-      const StudyRun *finest = nullptr;
-      for (const StudyRun &run : runs)
-        if (run.number("max_displacement_mm") &&
-            (!finest || run.number("n_dofs").value_or(0) >
-                          finest->number("n_dofs").value_or(0)))
-          finest = &run;
-      std::vector<std::optional<double>> result;
-      for (const StudyRun &run : runs)
-        if (finest && &run != finest && run.number("max_displacement_mm"))
-          result.push_back(
-            std::abs(*run.number("max_displacement_mm") -
-                     *finest->number("max_displacement_mm")) /
-            std::max(std::abs(*finest->number("max_displacement_mm")), 1e-300));
-        else
-          result.push_back(std::nullopt);
-      return result;
+      std::size_t finest = runs.size();
+      for (std::size_t r = 0; r < runs.size(); ++r)
+        if (runs[r].summary.get<bool>("converged", false) &&
+            (finest == runs.size() ||
+             runs[r].number("n_dofs").value_or(0) >=
+               runs[finest].number("n_dofs").value_or(0)))
+          finest = r;
+      return finest;
+    }
+
+    /// "converged, 3597 DoFs, 4 Newton steps (+ 4 of the direct inverse,
+    /// 13 Jacobian products), 0.52 s, 187 MB"
+    std::string
+    run_figures(const StudyRun &run, const std::string &out)
+    {
+      std::ostringstream text;
+      text << std::setprecision(3);
+      if (run.exit_code != 0)
+        text << "FAILED (exit code " << run.exit_code << ", see " << out
+             << "/screen.log), ";
+      else
+        text << (run.summary.get<bool>("converged", false) ? "converged, " :
+                                                             "done, ");
+      text << long(run.number("n_dofs").value_or(0)) << " DoFs, "
+           << long(run.number("newton_iterations").value_or(0))
+           << " Newton steps";
+      if (const auto direct = run.number("direct_inverse_newton_steps"))
+        text << " (+ " << long(*direct) << " of the direct inverse, "
+             << long(run.number("direct_inverse_jacobian_products").value_or(0))
+             << " Jacobian products)";
+      if (const auto it = run.number("inverse_iterations"))
+        text << ", " << long(*it) << " inverse iterations";
+      text << ", " << run.seconds << " s, " << run.memory_mb << " MB";
+      return text.str();
     }
   } // namespace
 
@@ -237,10 +290,18 @@ namespace RestShape
                         {"--set", axes[a].parameter + "=" + all[i][a]});
             described += (a ? ", " : "") + axes[a].parameter + "=" + all[i][a];
           }
-        args.insert(args.end(), {"--set", "Output/Directory=" + out, prm_file});
-        std::cout << "study run " << i + 1 << "/" << all.size() << ": "
-                  << described << " ... " << std::flush;
-        spawn(program, args, out + "/screen.log", run);
+        // The nodes' fields, for the comparison of the runs.
+        args.insert(args.end(),
+                    {"--set",
+                     "Output/Write nodal CSV=true",
+                     "--set",
+                     "Output/Directory=" + out,
+                     prm_file});
+        const std::string name = "study run " + std::to_string(i + 1) + "/" +
+                                 std::to_string(all.size());
+        std::cout << name << " started: " << described
+                  << " (screen output: " << out << "/screen.log)" << std::endl;
+        spawn(program, args, out + "/screen.log", name, run);
         try
           {
             boost::property_tree::read_json(out + "/summary.json", run.summary);
@@ -249,13 +310,8 @@ namespace RestShape
           {
             // A run that stopped before its summary: its exit code says so.
           }
-        std::cout << (run.exit_code == 0 ?
-                        "done" :
-                        "FAILED (exit code " + std::to_string(run.exit_code) +
-                          ", see " + out + "/screen.log)")
-                  << ", " << long(run.number("n_dofs").value_or(0)) << " DoFs, "
-                  << std::setprecision(3) << run.seconds << " s, "
-                  << run.memory_mb << " MB" << std::endl;
+        std::cout << name << " finished: " << run_figures(run, out)
+                  << std::endl;
         worst = std::max(worst, run.exit_code);
         runs.push_back(run);
       }
@@ -270,22 +326,43 @@ namespace RestShape
                      const std::vector<StudyRun>  &runs,
                      const std::string            &directory)
   {
-    const std::vector<std::string>        errors = error_keys(runs);
-    const auto                            finest = difference_to_finest(runs);
+    const std::vector<std::string> errors = reported(runs, exact_error_keys);
+    const std::vector<std::string> costs =
+      reported(runs,
+               {"newton_iterations",
+                "direct_inverse_newton_steps",
+                "direct_inverse_jacobian_products",
+                "inverse_iterations"});
+    const std::vector<std::string> inverse_errors =
+      reported(runs, {"mean_error_mm", "max_error_mm"});
+    // Each run against the finest one, at the nodes they share.
+    const std::size_t        finest = finest_run(runs);
+    std::vector<std::string> csv_files;
+    for (const StudyRun &run : runs)
+      csv_files.push_back(
+        std::filesystem::exists(directory + "/" + run.folder + "/nodes.csv") ?
+          directory + "/" + run.folder + "/nodes.csv" :
+          "");
+    const std::vector<FieldDifference> difference =
+      differences_to_reference(csv_files, finest);
+    bool any_rest = false;
+    for (const FieldDifference &d : difference)
+      any_rest = any_rest || d.rest_shape.has_value();
+
     TableHandler                          table;
     std::vector<std::string>              header = {"run"};
     std::vector<std::vector<std::string>> rows;
     for (const StudyAxis &axis : axes)
       header.push_back(axis.parameter.substr(axis.parameter.rfind('/') + 1));
-    for (const std::string key :
-         {"converged", "n_dofs", "newton_iterations", "inverse_iterations"})
-      header.push_back(key);
+    header.insert(header.end(), {"converged", "n_dofs"});
+    header.insert(header.end(), costs.begin(), costs.end());
     header.insert(header.end(), errors.begin(), errors.end());
+    header.insert(header.end(), inverse_errors.begin(), inverse_errors.end());
     header.insert(header.end(),
-                  {"max_displacement_mm",
-                   "max_displacement_difference_to_finest",
-                   "wall_seconds",
-                   "peak_memory_MB"});
+                  {"max_displacement_mm", "displacement_difference_to_finest"});
+    if (any_rest)
+      header.push_back("rest_shape_difference_to_finest");
+    header.insert(header.end(), {"wall_seconds", "peak_memory_MB"});
     const auto text = [](const std::optional<double> &x) {
       if (!x)
         return std::string("-");
@@ -299,13 +376,16 @@ namespace RestShape
         std::vector<std::string> row = {run.folder};
         row.insert(row.end(), run.values.begin(), run.values.end());
         row.push_back(run.summary.get<std::string>("converged", "false"));
-        for (const std::string key :
-             {"n_dofs", "newton_iterations", "inverse_iterations"})
-          row.push_back(text(run.number(key)));
-        for (const std::string &key : errors)
-          row.push_back(text(run.number(key)));
+        row.push_back(text(run.number("n_dofs")));
+        for (const auto *keys : {&costs, &errors, &inverse_errors})
+          for (const std::string &key : *keys)
+            row.push_back(text(run.number(key)));
         row.push_back(text(run.number("max_displacement_mm")));
-        row.push_back(text(finest[r]));
+        row.push_back(r == finest ? "reference" :
+                                    text(difference[r].displacement));
+        if (any_rest)
+          row.push_back(r == finest ? "reference" :
+                                      text(difference[r].rest_shape));
         row.push_back(text(run.seconds));
         row.push_back(text(run.memory_mb));
         for (unsigned int c = 0; c < header.size(); ++c)
@@ -332,15 +412,17 @@ namespace RestShape
         table.write_text(out, TableHandler::org_mode_table);
       },
       "Output/Directory");
-    // Plot the first exact error, else the difference to the finest run.
-    std::vector<std::optional<double>> plotted = finest;
-    std::string name = "max displacement difference to the finest run";
+    // Plot the first exact error, else the difference to the finest run
+    // (of the rest shape in inverse runs).
+    std::string name = any_rest ? "rest shape difference to the finest run" :
+                                  "displacement difference to the finest run";
+    std::vector<std::optional<double>> plotted;
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      plotted.push_back(!errors.empty() ? runs[r].number(errors[0]) :
+                        any_rest        ? difference[r].rest_shape :
+                                          difference[r].displacement);
     if (!errors.empty())
-      {
-        name = errors[0];
-        for (unsigned int r = 0; r < runs.size(); ++r)
-          plotted[r] = runs[r].number(errors[0]);
-      }
+      name = errors[0];
     std::vector<StudyPoint> points;
     for (unsigned int r = 0; r < runs.size(); ++r)
       if (plotted[r])

@@ -73,6 +73,10 @@ namespace RestShape
             << "<text x=\"20\" y=\"" << height / 2
             << "\" text-anchor=\"middle\" transform=\"rotate(-90 20 "
             << height / 2 << ")\">" << y_name << "</text>\n";
+        if (points.empty())
+          out << "<text x=\"" << width / 2 << "\" y=\"" << height / 2
+              << "\" text-anchor=\"middle\">no run has a positive " << y_name
+              << " (see study.txt)</text>\n";
         for (const StudyPoint &p : points)
           out << "<circle cx=\"" << sx(p.x) << "\" cy=\"" << sy(p.y)
               << "\" r=\"4\" fill=\"#1f77b4\"/><text x=\"" << sx(p.x) + 6

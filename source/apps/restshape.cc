@@ -18,6 +18,7 @@
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
+#include <restshape/base/version.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/mesh/labelled_mesh.h>
 
@@ -33,6 +34,7 @@ namespace
   const char *usage =
     "usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm\n"
     "       restshape --print-parameters [SUBSECTION]\n"
+    "       restshape --version\n"
     "       restshape --study 'Subsection/Parameter=value1,value2,...'...\n"
     "                 [--set 'Subsection/Parameter=value']... SCENE.prm\n"
     "\n"
@@ -164,6 +166,12 @@ main(int argc, char **argv)
             {
               if (root)
                 std::cout << usage;
+              return 0;
+            }
+          else if (arg == "--version")
+            {
+              if (root)
+                std::cout << version_text("restshape") << std::endl;
               return 0;
             }
           else if (arg == "--set")

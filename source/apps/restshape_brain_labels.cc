@@ -30,6 +30,7 @@
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/label_names.h>
+#include <restshape/base/version.h>
 #include <restshape/mesher/image_morphology.h>
 #include <restshape/mesher/label_map.h>
 #include <restshape/mesher/labelled_image.h>
@@ -330,6 +331,11 @@ main(int argc, char **argv)
                             "--overlay-map",
                             "--overlay-names",
                             "--names-out"});
+      if (cl.version())
+        {
+          std::cout << version_text("restshape-brain-labels") << std::endl;
+          return 0;
+        }
       if (cl.help())
         {
           std::cout << usage;

@@ -24,6 +24,7 @@
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_start.h>
+#include <restshape/base/version.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
@@ -273,6 +274,11 @@ main(int argc, char **argv)
                             "--hemisphere",
                             "--refinements",
                             "--grading"});
+      if (cl.version())
+        {
+          std::cout << version_text("restshape-gridgen") << std::endl;
+          return 0;
+        }
       if (cl.help())
         {
           std::cout << usage;

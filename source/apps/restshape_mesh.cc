@@ -6,6 +6,7 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/version.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
@@ -457,6 +458,11 @@ main(int argc, char **argv)
                             "--label-names",
                             "--label-map",
                             "--unlisted-labels"});
+      if (cl.version())
+        {
+          std::cout << version_text("restshape-mesh") << std::endl;
+          return 0;
+        }
       if (cl.help())
         {
           std::cout << usage;

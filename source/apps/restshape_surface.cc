@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/generators.h>
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/version.h>
 
 #include <array>
 #include <iostream>
@@ -60,6 +61,11 @@ main(int argc, char **argv)
         argv,
         {"--box", "--sphere", "--size", "--radius", "--subdivisions", "--out"},
         {"--flip", "--open"});
+      if (cl.version())
+        {
+          std::cout << version_text("restshape-surface") << std::endl;
+          return 0;
+        }
       if (cl.help())
         {
           std::cout << usage;

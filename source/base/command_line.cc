@@ -87,6 +87,8 @@ namespace RestShape
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
           help_given = true;
+        else if (arg == "--version")
+          version_given = true;
         else if (without.count(arg))
           set_flags.insert(arg);
         else if (!with_value.count(arg))
@@ -106,6 +108,12 @@ namespace RestShape
   ToolOptions::help() const
   {
     return help_given;
+  }
+
+  bool
+  ToolOptions::version() const
+  {
+    return version_given;
   }
 
   bool

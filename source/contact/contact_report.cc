@@ -304,6 +304,12 @@ namespace RestShape
   {
     const std::vector<double> pressure = pressures(raw_residual);
     VectorType                fields   = forward.zero_vector();
+    // Gap and pressure exist only at the contact candidates (the surface
+    // nodes that may touch the obstacle): elsewhere NaN, which ParaView
+    // leaves blank, not 0, which would look like a touching node.
+    for (const Node &node : forward.owned_nodes())
+      for (const unsigned int c : {1, 2})
+        fields[node.dofs[c]] = std::numeric_limits<double>::quiet_NaN();
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned)
         {

@@ -258,11 +258,12 @@ namespace RestShape
   }
 
   void
-  InverseProblem::write_output(const unsigned int step,
-                               const unsigned int iteration)
+  InverseProblem::write_output(const unsigned int            step,
+                               const std::vector<CellField> &cells)
   {
     if (output == nullptr)
       return;
+    last_step = step;
     TimerOutput::Scope scope(timer, "Output");
     // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
     VectorType error = target_shift, target = forward.zero_vector();
@@ -296,7 +297,16 @@ namespace RestShape
            1.,
            ""});
       }
-    output->write_fields(forward, step, iteration, fields);
+    // The record's time is its step: it increases over the iterations of
+    // every refinement cycle (iterations.csv maps steps to iterations).
+    output->write_fields(forward, step, step, fields, cells);
+  }
+
+  void
+  InverseProblem::rewrite_final_output(const std::vector<CellField> &cells)
+  {
+    if (last_step != static_cast<unsigned int>(-1))
+      write_output(last_step, cells);
   }
 
   InverseResult
@@ -525,7 +535,7 @@ namespace RestShape
                     "converge: " +
                       stats.failure);
     record(0, stats, false);
-    write_output(first_step, 0);
+    write_output(first_step);
 
     const double  initial = measure(target_errors());
     StoppingRules stopping(initial, parameters.tolerance);
@@ -619,7 +629,7 @@ namespace RestShape
         ++result.iterations;
         result.partial_updates += partial;
         record(result.iterations, stats, accelerated);
-        write_output(first_step + result.iterations, result.iterations);
+        write_output(first_step + result.iterations);
 
         if (converged(errors))
           {

@@ -4,9 +4,11 @@
 
 #include <restshape/base/atomic_file.h>
 #include <restshape/io/output.h>
+#include <restshape/io/vtu_cell_data.h>
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace RestShape
 {
@@ -44,6 +46,38 @@ namespace RestShape
           }
       }
     };
+
+    /// The cell data of a VTU piece, one value per locally owned cell in
+    /// the order DataOut writes their patches: the label and (under MPI)
+    /// the rank as integers, the element-averaged von Mises stress and
+    /// the extra cell fields.
+    std::vector<VtuCellArray>
+    cell_arrays(const ForwardProblem         &problem,
+                const std::vector<CellField> &extra)
+    {
+      const MPI_Comm comm =
+        problem.dof_handler().get_triangulation().get_communicator();
+      std::vector<VtuCellArray> arrays = {{"label", true, {}},
+                                          {"von_mises_Pa", false, {}}};
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        arrays.push_back({"subdomain", true, {}});
+      for (const CellField &f : extra)
+        arrays.push_back({f.name, false, {}});
+      const Vector<float> stress = problem.von_mises_stress();
+      for (const auto &cell : problem.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int i = cell->active_cell_index();
+            arrays[0].values.push_back(cell->material_id());
+            arrays[1].values.push_back(stress[i]);
+            unsigned int a = 2;
+            if (arrays.size() > 2 + extra.size())
+              arrays[a++].values.push_back(cell->subdomain_id());
+            for (const CellField &f : extra)
+              arrays[a++].values.push_back(f.values[i]);
+          }
+      return arrays;
+    }
   } // namespace
 
   double
@@ -211,33 +245,18 @@ namespace RestShape
           }
       }
 
-    const unsigned int n_cells =
-      problem.mesh().triangulation().n_active_cells();
-    Vector<float> labels(n_cells), subdomain(n_cells);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          labels[cell->active_cell_index()]    = cell->material_id();
-          subdomain[cell->active_cell_index()] = cell->subdomain_id();
-        }
-    const Vector<float> stress = problem.von_mises_stress();
-    data_out.add_data_vector(labels, "label", DataOut<3>::type_cell_data);
-    data_out.add_data_vector(stress,
-                             "von_mises_Pa",
-                             DataOut<3>::type_cell_data);
-    if (Utilities::MPI::n_mpi_processes(comm) > 1)
-      data_out.add_data_vector(subdomain,
-                               "subdomain",
-                               DataOut<3>::type_cell_data);
-    for (const CellField &f : extra_cell)
-      data_out.add_data_vector(f.values, f.name, DataOut<3>::type_cell_data);
-
     const unsigned int degree = problem.fe().degree;
     data_out.build_patches(deformed, degree, DataOut<3>::curved_inner_cells);
     DataOutBase::VtkFlags flags;
-    flags.time                     = time;
-    flags.write_higher_order_cells = degree > 1;
+    flags.time = time;
+    // Lagrange cells for Q2 hexahedra. deal.II 9.4 writes P2 tetrahedra as
+    // quadratic VTK tetrahedra (10 nodes) without this flag; with it, it
+    // writes empty offsets and types, which no reader opens.
+    flags.write_higher_order_cells =
+      degree > 1 && problem.fe().reference_cell().is_hyper_cube();
     data_out.set_flags(flags);
+    const std::vector<VtuCellArray> cell_data =
+      cell_arrays(problem, extra_cell);
 
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -248,14 +267,19 @@ namespace RestShape
       pieces.push_back(n_ranks == 1 ?
                          base + ".vtu" :
                          base + "." + Utilities::int_to_string(r, 4) + ".vtu");
-    write_file_atomically(path(pieces[rank]),
-                          [&](std::ostream &out) { data_out.write_vtu(out); });
+    write_file_atomically(path(pieces[rank]), [&](std::ostream &out) {
+      std::ostringstream vtu;
+      data_out.write_vtu(vtu);
+      out << add_cell_data(vtu.str(), cell_data);
+    });
     std::string record = pieces[0];
     if (n_ranks > 1)
       {
         record = base + ".pvtu";
         write_text(record, [&](std::ostream &out) {
-          data_out.write_pvtu_record(out, pieces);
+          std::ostringstream pvtu;
+          data_out.write_pvtu_record(pvtu, pieces);
+          out << add_cell_data_to_record(pvtu.str(), cell_data);
         });
       }
 

@@ -123,7 +123,10 @@ namespace RestShape
     std::vector<std::vector<double>>            iteration_rows;
     unsigned int                                next_step = 0; // VTU numbering
     InverseResult                               inverse_result;
-    ErrorEstimate                               estimate; // of the last cycle
+    /// The inverse iteration of the last cycle (its final VTU record gets
+    /// the error estimate).
+    std::unique_ptr<InverseProblem> inverse;
+    ErrorEstimate                   estimate; // of the last cycle
   };
 } // namespace RestShape
 

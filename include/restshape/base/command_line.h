@@ -26,9 +26,9 @@ namespace RestShape
 
   /**
    * The command line of a companion tool: options with a value
-   * ("--out FILE"), flags without one ("--flip"), and --help/-h. Every
-   * option is declared; an unknown option, a missing value or a bad number
-   * is an InputError naming the option (with the nearest declared ones).
+   * ("--out FILE"), flags without one ("--flip"), --help/-h and --version.
+   * Every option is declared; an unknown option, a missing value or a bad
+   * number is an InputError naming the option (with the nearest declared ones).
    * An option given twice keeps its last value; all() returns every one.
    */
   class ToolOptions
@@ -42,6 +42,10 @@ namespace RestShape
     /// --help or -h was given (the tool then prints its usage, exit 0).
     bool
     help() const;
+
+    /// --version was given (the tool then prints version_text(), exit 0).
+    bool
+    version() const;
 
     bool
     given(const std::string &option) const;
@@ -91,7 +95,8 @@ namespace RestShape
   private:
     std::map<std::string, std::vector<std::string>> values;
     std::set<std::string>                           set_flags;
-    bool                                            help_given = false;
+    bool                                            help_given    = false;
+    bool                                            version_given = false;
   };
 } // namespace RestShape
 

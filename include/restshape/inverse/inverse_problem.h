@@ -106,6 +106,11 @@ namespace RestShape
     const std::vector<InverseIterationRecord> &
     records() const;
 
+    /// Write the last VTU record of the iteration again, with the cell
+    /// fields @p cells (the error estimate of the final equilibrium).
+    void
+    rewrite_final_output(const std::vector<CellField> &cells);
+
   private:
     double
     measure(const std::pair<double, double> &errors) const;
@@ -132,8 +137,12 @@ namespace RestShape
     record(const unsigned int     iteration,
            const SolveStatistics &stats,
            const bool             anderson);
+    /// The VTU record @p step of the series (its time value too).
     void
-    write_output(const unsigned int step, const unsigned int iteration);
+    write_output(const unsigned int            step,
+                 const std::vector<CellField> &cells = {});
+    /// The step of the last record written (-1: none).
+    unsigned int last_step = static_cast<unsigned int>(-1);
     /// The errors of the last equilibrium into @p result, and @p reason
     /// (empty: converged) on screen.
     InverseResult
