@@ -4,7 +4,8 @@
 # trace, and leave an earlier result in the output directory untouched.
 # EXIT_CODE 2 (a solver that failed): the one line, and a summary.json that
 # says "converged": false with the failure (its figures), instead.
-# Environment: STDOUT_REGEX, if set, must match the screen output (stdout).
+# Environment: STDOUT_REGEX, if set, must match the screen output (stdout);
+# MPI_RANKS, if set, runs restshape on that many ranks under mpirun.
 #
 # usage: run_error.sh RESTSHAPE OUTPUT_DIRECTORY EXIT_CODE REGEX ARGS...
 set -u
@@ -19,7 +20,11 @@ mkdir -p "$out"
 echo '{"earlier": "result"}' >"$out/summary.json"
 cp "$out/summary.json" "$out/sentinel"
 
-"$exe" --set "Output/Directory=$out" "$@" >"$out/stdout" 2>"$out/stderr"
+launcher=()
+if [ -n "${MPI_RANKS:-}" ]; then
+  launcher=(mpirun --allow-run-as-root --oversubscribe --quiet -np "$MPI_RANKS")
+fi
+"${launcher[@]}" "$exe" --set "Output/Directory=$out" "$@" >"$out/stdout" 2>"$out/stderr"
 code=$?
 fail() {
   echo "FAIL: $1"

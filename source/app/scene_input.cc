@@ -4,7 +4,9 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
 
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 
 namespace RestShape
 {
@@ -49,6 +51,56 @@ namespace RestShape
       prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// Includes nested deeper than this are refused.
+    constexpr unsigned int max_include_depth = 16;
+
+    /**
+     * The include lines of @p file and of the files they include, checked
+     * before deal.II reads them: every included file exists and is a
+     * regular file, none includes itself again (deal.II's reader recursed
+     * until the stack overflowed), nesting stays below max_include_depth.
+     * @p chain: the files being read, outermost first.
+     */
+    void
+    check_includes(const std::string &file, std::vector<std::string> &chain)
+    {
+      namespace fs = std::filesystem;
+      std::ifstream in(file);
+      std::string   line;
+      for (unsigned int number = 1; std::getline(in, line); ++number)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("include", 0) != 0 || line.size() < 8 ||
+              !std::isspace(static_cast<unsigned char>(line[7])))
+            continue;
+          const std::string name = Utilities::trim(line.substr(8));
+          const auto        fail = [&](const std::string &what) {
+            throw InputError(file,
+                             "",
+                             "line " + std::to_string(number) + ": include " +
+                               name + ": " + what);
+          };
+          std::error_code ec;
+          if (fs::is_directory(name, ec))
+            fail("a directory; expected a parameter file");
+          if (!fs::is_regular_file(name, ec))
+            fail("no such file (paths are relative to the working "
+                 "directory)");
+          for (const std::string &outer : chain)
+            if (fs::equivalent(outer, name, ec))
+              fail("includes " + outer + " again (an include cycle)");
+          if (chain.size() >= max_include_depth)
+            fail("includes nested more than " +
+                 std::to_string(max_include_depth) + " deep");
+          chain.push_back(name);
+          check_includes(name, chain);
+          chain.pop_back();
+        }
+    }
+  } // namespace
+
   void
   read_scene(ParameterHandler               &prm,
              const std::string              &prm_file,
@@ -57,6 +109,8 @@ namespace RestShape
     std::error_code ec;
     if (!std::filesystem::is_regular_file(prm_file, ec))
       throw InputError(prm_file, "", "no such scene file");
+    std::vector<std::string> chain = {prm_file};
+    check_includes(prm_file, chain);
     try
       {
         prm.parse_input(prm_file, "", false, true);

@@ -1,8 +1,10 @@
 #include <deal.II/distributed/tria.h>
 
+#include <restshape/app/run_size.h>
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
@@ -10,6 +12,7 @@
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
 
+#include <cmath>
 #include <iomanip>
 
 namespace RestShape
@@ -30,6 +33,54 @@ namespace RestShape
 
   void
   Simulator::run()
+  {
+    try
+      {
+        run_phases();
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const SolverFailure &e)
+      {
+        // A piece that only a hinge holds is the likely cause: say so.
+        const std::string pieces = unheld_pieces_text();
+        if (pieces.empty())
+          {
+            record_failure(e.what());
+            throw;
+          }
+        summary.set("unheld_pieces", pieces);
+        record_failure(e.what());
+        throw SolverFailure(std::string(e.what()) + "; " + pieces);
+      }
+    catch (const std::exception &e)
+      {
+        // Every run that stops after it began to write its results leaves
+        // a summary.json that says why, never the previous run's.
+        record_failure(e.what());
+        throw;
+      }
+  }
+
+  void
+  Simulator::record_failure(const std::string &what)
+  {
+    if (!output)
+      return;
+    summary.set("converged", false);
+    if (!summary.has("failure"))
+      summary.set("failure", what);
+    summary.set("wall_seconds", wall_timer.wall_time());
+    summary.set("restshape_version", std::string(version()));
+    summary.set("git_revision", std::string(git_revision()));
+    output->write_text("summary.json",
+                       [&](std::ostream &out) { summary.write(out); });
+  }
+
+  void
+  Simulator::run_phases()
   {
     make_mesh();
     check_scene();
@@ -80,7 +131,11 @@ namespace RestShape
   Simulator::make_mesh()
   {
     TimerOutput::Scope scope(timer, "Setup");
-    mesh = std::make_unique<LabelledMesh>(parameters.mesh, comm);
+    const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
+    mesh                    = std::make_unique<LabelledMesh>(
+      parameters.mesh, comm, [&](const std::size_t cells) {
+        check_run_size(cells, parameters, prm_file, root);
+      });
     materials =
       std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
     if (!parameters.verification.exact_displacement.empty())
@@ -92,6 +147,9 @@ namespace RestShape
         parameters.verification.exact_rest_displacement,
         parameters.mesh.length_unit,
         "Verification/Exact rest displacement");
+    for (const auto *solution : {exact.get(), exact_rest.get()})
+      if (solution)
+        solution->check_finite_on(mesh->triangulation());
 
     pcout << "Mesh " << parameters.mesh.file << ": "
           << mesh->triangulation().n_global_active_cells()
@@ -113,88 +171,6 @@ namespace RestShape
     if (std::isfinite(gap))
       pcout << "  " << describe_surface_gap(gap * 1e3, where * 1e3)
             << " (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
-  }
-
-  void
-  Simulator::check_scene() const
-  {
-    for (const LabelList &list : parameters.label_lists)
-      try
-        {
-          check_labels_exist(list, mesh->labels());
-        }
-      catch (const InputError &e)
-        {
-          throw e.in_file(prm_file);
-        }
-    if (parameters.refinement.strategy ==
-          RefinementParameters::Strategy::adaptive &&
-        mesh->is_simplex())
-      throw InputError(
-        prm_file,
-        "Adaptive refinement/Strategy",
-        "adaptive refinement needs hexahedra: deal.II 9.4 has no "
-        "hanging-node constraints on tetrahedra; use Mesh/Cell type "
-        "= hexahedra or Strategy = global");
-    if (!parameters.mesh.rest_shape_file.empty() &&
-        parameters.refinement.cycles > 0)
-      throw InputError(
-        prm_file,
-        "Mesh/Rest shape file",
-        "a rest shape file describes one mesh; expected Adaptive "
-        "refinement/Cycles = 0 (use Mesh/Global refinements)");
-
-    if (forward && parameters.solver.check_stability == StabilityCheck::on &&
-        !forward->tangent_is_symmetric())
-      throw InputError(
-        prm_file,
-        "Solver/Check stability",
-        "the follower pressure acts on a surface with free edges, which is "
-        "not conservative (its tangent is not symmetric): stability is "
-        "then not a question of the energy; expected Check stability = "
-        "false, or pressure faces that are closed or held at their edges");
-    if (!forward || contact || parameters.boundary.support_stiffness > 0)
-      return;
-    // Without contact or elastic support, every displacement component must
-    // be fixed somewhere, or rigid-body motion makes the problem singular.
-    const std::array<bool, 3> held = forward->fixed_components();
-    for (unsigned int c = 0; c < 3; ++c)
-      if (!held[c])
-        throw InputError(
-          prm_file,
-          "Boundary conditions/Fixed labels",
-          std::string("no node is fixed in ") + "xyz"[c] +
-            " and there is no contact or elastic support: the problem is singular "
-            "(free rigid-body motion); expected fixed labels that "
-            "hold every component");
-  }
-
-  void
-  Simulator::check_obstacle_placement() const
-  {
-    const std::vector<Point<3>> &targets = mesh->targets();
-    if (targets.empty())
-      {
-        contact->check_placement();
-        return;
-      }
-    // A rest shape may cross the obstacle; its target may not.
-    const auto               &vertices = mesh->triangulation().get_vertices();
-    std::vector<Tensor<1, 3>> shift(vertices.size());
-    for (unsigned int v = 0; v < targets.size(); ++v)
-      shift[v] = targets[v] - vertices[v];
-    const VectorType ghosted =
-      forward->ghosted_copy(forward->interpolate_vertex_field(shift));
-    contact->check_placement(&ghosted);
-  }
-
-  void
-  Simulator::report_load_scales() const
-  {
-    const LoadScales scales = compute_load_scales(*forward);
-    pcout << scales.text() << std::endl;
-    for (const std::string &warning : scales.warnings())
-      pcout << "Warning: " << warning << std::endl;
   }
 
   void
@@ -282,6 +258,23 @@ namespace RestShape
     output = std::make_unique<OutputWriter>(parameters.output.directory,
                                             parameters.mesh.length_unit,
                                             comm);
+    // From here on the directory holds this run's results only: the
+    // previous run's are removed, and summary.json says that this run has
+    // not finished until it has (and what stopped it, if it is
+    // interrupted).
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      remove_previous_results(parameters.output.directory);
+    const std::string unfinished =
+      "{\n  \"converged\": false,\n  \"restshape_version\": \"" +
+      std::string(version()) + "\",\n  \"git_revision\": \"" + git_revision() +
+      "\",";
+    output->write_text("summary.json", [&](std::ostream &out) {
+      out << unfinished
+          << "\n  \"failure\": \"the run has not finished (it is running, "
+             "or it was killed)\"\n}\n";
+    });
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      set_interrupted_summary(output->path("summary.json"), unfinished);
     output->write_text("parameters.prm", [&](std::ostream &out) {
       out << "# The effective parameters of a run of "
           << version_text("restshape") << "\n";

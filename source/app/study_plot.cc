@@ -39,12 +39,16 @@ namespace RestShape
         xs.push_back(p.x);
         ys.push_back(p.y);
       }
-    const auto [x0, x1] = xs.empty() ? std::make_pair(0., 1.) : decades(xs);
-    const auto [y0, y1] = ys.empty() ? std::make_pair(0., 1.) : decades(ys);
-    const auto sx       = [&, x0 = x0, x1 = x1](const double x) {
+    const std::pair<double, double> x_range =
+      xs.empty() ? std::make_pair(0., 1.) : decades(xs);
+    const std::pair<double, double> y_range =
+      ys.empty() ? std::make_pair(0., 1.) : decades(ys);
+    const double x0 = x_range.first, x1 = x_range.second;
+    const double y0 = y_range.first, y1 = y_range.second;
+    const auto   sx = [&](const double x) {
       return margin + (std::log10(x) - x0) / (x1 - x0) * (width - 2 * margin);
     };
-    const auto sy = [&, y0 = y0, y1 = y1](const double y) {
+    const auto sy = [&](const double y) {
       return height - margin -
              (std::log10(y) - y0) / (y1 - y0) * (height - 2 * margin);
     };

@@ -15,6 +15,7 @@
 #include <restshape/app/simulator.h>
 #include <restshape/app/study.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
@@ -139,6 +140,7 @@ main(int argc, char **argv)
                                        argv,
                                        numbers::invalid_unsigned_int);
   match_blas_threads_to_deal_ii();
+  install_interrupt_handlers();
   const MPI_Comm comm = MPI_COMM_WORLD;
   const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
   std::string    prm_file;

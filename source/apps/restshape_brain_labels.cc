@@ -29,6 +29,7 @@
 // restshape-mesh --label-names.
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <restshape/base/label_names.h>
 #include <restshape/base/version.h>
 #include <restshape/mesher/image_morphology.h>
@@ -317,6 +318,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  RestShape::install_interrupt_handlers();
   try
     {
       const ToolOptions cl(argc,

@@ -23,6 +23,7 @@
 
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/version.h>
 #include <restshape/mesh/generated_meshes.h>
@@ -258,6 +259,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  RestShape::install_interrupt_handlers();
   prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try

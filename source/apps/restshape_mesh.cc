@@ -6,6 +6,8 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
+#include <restshape/base/machine_memory.h>
 #include <restshape/base/version.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/mesh/gmsh_io.h>
@@ -18,6 +20,8 @@
 #include <restshape/mesher/labelled_image.h>
 #include <restshape/mesher/skull_cavity.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -42,9 +46,13 @@ namespace
     "       [--skull-facet-size MM]]\n"
     "\n"
     "The mesh is written as gmsh 2.2 in mm, every tetrahedron with its image\n"
-    "label as physical volume tag. The skull is a closed, outward-oriented\n"
-    "surface at --skull-gap mm from the labelled region (0: touching it;\n"
-    "negative: cutting into it, as a segmented skull can), for\n"
+    "label as physical volume tag; the mesh and the skull appear together,\n"
+    "once both are made (a failure leaves earlier files as they were). Sizes\n"
+    "below a quarter of the voxel size, and a cell size whose mesh would not\n"
+    "fit the machine's memory, are refused before the work.\n"
+    "The skull is a closed, outward-oriented surface at --skull-gap mm from\n"
+    "the labelled region (0: touching it; negative: cutting into it, as a\n"
+    "segmented skull can), for\n"
     "Contact/Obstacle file with Side = inside. Before the offset, the labelled\n"
     "region is closed morphologically with a ball of --skull-closing mm\n"
     "(default 10; 0 = none), so that the skull bridges sulci and fissures.\n"
@@ -93,6 +101,40 @@ namespace
     double           skull_gap = 0, skull_facet_size = 0, skull_closing = 10;
     double           min_piece_fraction = 0.01, close_sulci = 0;
   };
+
+  /// --out is a gmsh file name, --skull-out a surface file name, neither
+  /// an existing directory, and not the same file.
+  void
+  check_output_names(const MesherSettings &s)
+  {
+    namespace fs     = std::filesystem;
+    const auto check = [](const std::string              &file,
+                          const std::string              &option,
+                          const std::vector<std::string> &extensions,
+                          const std::string              &expected) {
+      if (fs::is_directory(file))
+        throw InputError(file, option, "is a directory; expected " + expected);
+      const std::string extension = fs::path(file).extension().string();
+      if (std::find(extensions.begin(), extensions.end(), extension) ==
+          extensions.end())
+        throw InputError(file,
+                         option,
+                         "unsupported extension '" + extension +
+                           "'; expected " + expected);
+    };
+    check(s.out, "--out", {".msh"}, "a gmsh file name (.msh)");
+    if (s.skull_out.empty())
+      return;
+    check(s.skull_out,
+          "--skull-out",
+          {".off", ".stl", ".obj"},
+          "a surface file name (.off, .stl or .obj)");
+    if (fs::absolute(s.skull_out).lexically_normal() ==
+        fs::absolute(s.out).lexically_normal())
+      throw InputError(s.skull_out,
+                       "--skull-out",
+                       "names the same file as --out; expected another file");
+  }
 
   MesherSettings
   read_settings(const ToolOptions &cl)
@@ -150,6 +192,7 @@ namespace
       throw InputError("",
                        "--skull-out",
                        "--skull-gap given without an output surface");
+    check_output_names(s);
     // Fail on an unwritable destination before the meshing work.
     for (const std::string &file : {s.out, s.skull_out})
       if (!file.empty())
@@ -226,6 +269,57 @@ namespace
                 << (names.name(label).empty() ? "" : " " + names.name(label))
                 << " (" << count * h[0] * h[1] * h[2] / 1000 << " cm^3)";
     std::cout << std::endl;
+  }
+
+  /// Sizes of the mesh against the image: Mesh_3 resolves a surface far
+  /// below the voxel size only by refining without end, and a cell size
+  /// far below it makes more tetrahedra than memory holds.
+  void
+  check_mesh_sizes(const LabelledImage                       &image,
+                   const std::map<unsigned int, std::size_t> &counts,
+                   const MesherSettings                      &s)
+  {
+    // Smallest sizes, as fractions of the smallest voxel size.
+    constexpr double smallest_size_in_voxels = 0.25;
+    // Measured with Mesh_3 on tests/data/sphere_labels.nii (cell size
+    // 0.5 mm: 864,279 tetrahedra): a tetrahedron per 0.25 cell size^3.
+    constexpr double volume_per_tetrahedron = 0.25;
+    constexpr double bytes_per_tetrahedron  = 1024;
+    constexpr double usable_share           = 0.75;
+
+    const auto   h     = image.spacing();
+    const double h_min = *std::min_element(h.begin(), h.end());
+    const double bound = smallest_size_in_voxels * h_min;
+    const std::vector<std::pair<std::string, double>> sizes = {
+      {"--cell-size", s.options.cell_size},
+      {"--facet-size", s.options.facet_size},
+      {"--facet-distance", s.options.facet_distance},
+      {"--skull-facet-size", s.skull_out.empty() ? bound : s.skull_facet_size}};
+    for (const auto &[option, size] : sizes)
+      if (size < bound)
+        throw InputError(s.image_file,
+                         option,
+                         number_text(size) +
+                           " mm is far below the voxel size (" +
+                           number_text(h_min) + " mm); expected at least " +
+                           number_text(bound) + " mm");
+
+    double volume = 0; // mm^3
+    for (const auto &[label, count] : counts)
+      volume += count * h[0] * h[1] * h[2];
+    const double tetrahedra =
+      volume / (volume_per_tetrahedron * std::pow(s.options.cell_size, 3));
+    const double bytes  = tetrahedra * bytes_per_tetrahedron;
+    const double memory = physical_memory_bytes();
+    if (memory > 0 && bytes > usable_share * memory)
+      throw InputError(s.image_file,
+                       "--cell-size",
+                       number_text(s.options.cell_size) + " mm makes about " +
+                         number_text(tetrahedra) + " tetrahedra (" +
+                         number_text(bytes / bytes_per_gibibyte) +
+                         " GiB), more than this machine's " +
+                         number_text(memory / bytes_per_gibibyte) +
+                         " GiB; expected a larger cell size");
   }
 
   /// --close-sulci: the closed image (moved from @p image unless the
@@ -372,7 +466,8 @@ namespace
   write_skull(const LabelledImage   &image,
               const LabelledImage   &cavity,
               const MeshDescription &mesh,
-              const MesherSettings  &s)
+              const MesherSettings  &s,
+              const std::string     &file)
   {
     dealii::Timer timer;
     const bool    segmented = !s.skull_image.empty();
@@ -386,7 +481,7 @@ namespace
                                 skull_facet_distance(s.options.facet_distance,
                                                      0,
                                                      s.skull_facet_size),
-                                s.skull_out) :
+                                file) :
         write_enclosing_surface(image,
                                 s.skull_gap,
                                 s.skull_closing,
@@ -394,8 +489,8 @@ namespace
                                 skull_facet_distance(s.options.facet_distance,
                                                      s.skull_gap,
                                                      s.skull_facet_size),
-                                s.skull_out);
-    const Obstacle skull(s.skull_out, 1e-3, true);
+                                file);
+    const Obstacle skull(file, 1e-3, true);
     double         min_gap = 1e9, max_gap = 0, sum = 0;
     unsigned int   outside = 0;
     const auto     nodes   = boundary_vertices(mesh);
@@ -437,6 +532,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  RestShape::install_interrupt_handlers();
   try
     {
       const ToolOptions cl(argc,
@@ -480,6 +576,7 @@ main(int argc, char **argv)
       const LabelNames names  = prepare_labels(image, s);
       const auto       counts = image.label_counts();
       report_image(image, counts, s.image_file, names);
+      check_mesh_sizes(image, counts, s);
 
       // The closed image is meshed; the skull comes from the image as read.
       LabelledImage closed;
@@ -501,12 +598,16 @@ main(int argc, char **argv)
       for (auto &p : in_metres.vertices)
         p *= 1e-3;
       check_mesh(in_metres, s.out);
-      write_gmsh(in_metres, 1e-3, s.out);
+      // The mesh and its skull appear together, once both are made.
+      StagedFiles staged;
+      write_gmsh(in_metres, 1e-3, staged.stage(s.out));
+      if (!s.skull_out.empty())
+        write_skull(image, cavity, in_metres, s, staged.stage(s.skull_out));
+      staged.commit("--out");
       std::cout << "wrote " << s.out << " (mm"
                 << (names.empty() ? "" : ", with the names of its labels")
-                << ")" << std::endl;
-      if (!s.skull_out.empty())
-        write_skull(image, cavity, in_metres, s);
+                << ")" << (s.skull_out.empty() ? "" : " and " + s.skull_out)
+                << std::endl;
     }
   catch (const std::exception &exc)
     {

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/generators.h>
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <restshape/base/version.h>
 
 #include <array>
@@ -54,6 +55,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  RestShape::install_interrupt_handlers();
   try
     {
       const ToolOptions cl(

@@ -1,5 +1,6 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/interruption.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,6 +17,16 @@ namespace RestShape
                         const std::string                         &parameter)
   {
     const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+    // An interruption removes it.
+    register_temporary_file(tmp);
+    struct Unregister
+    {
+      const std::string &tmp;
+      ~Unregister()
+      {
+        unregister_temporary_file(tmp);
+      }
+    } unregister{tmp};
     {
       std::ofstream out(tmp);
       if (!out)
@@ -54,6 +65,15 @@ namespace RestShape
       target.parent_path() /
       (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
     std::error_code ec;
+    register_temporary_file(tmp.string());
+    struct Unregister
+    {
+      const std::string tmp;
+      ~Unregister()
+      {
+        unregister_temporary_file(tmp);
+      }
+    } unregister{tmp.string()};
     if (!write(tmp.string()) || !fs::exists(tmp, ec))
       {
         fs::remove(tmp, ec);
@@ -90,5 +110,41 @@ namespace RestShape
                        parameter,
                        "the directory is not writable; expected a directory "
                        "where results can be written");
+  }
+
+  StagedFiles::~StagedFiles()
+  {
+    for (const auto &[staged, path] : files)
+      {
+        std::remove(staged.c_str());
+        unregister_temporary_file(staged);
+      }
+  }
+
+  std::string
+  StagedFiles::stage(const std::string &path)
+  {
+    const std::filesystem::path target(path);
+    const std::string           staged =
+      (target.parent_path() / (".staged-" + std::to_string(::getpid()) + "-" +
+                               target.filename().string()))
+        .string();
+    register_temporary_file(staged);
+    files.emplace_back(staged, path);
+    return staged;
+  }
+
+  void
+  StagedFiles::commit(const std::string &parameter)
+  {
+    for (const auto &[staged, path] : files)
+      if (std::rename(staged.c_str(), path.c_str()) != 0)
+        throw InputError(path,
+                         parameter,
+                         std::string("cannot rename into place: ") +
+                           std::strerror(errno));
+    for (const auto &[staged, path] : files)
+      unregister_temporary_file(staged);
+    files.clear();
   }
 } // namespace RestShape

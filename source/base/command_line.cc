@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace RestShape
 {
@@ -13,16 +14,11 @@ namespace RestShape
   parse_number(const std::string &option, const std::string &text)
   {
     const std::string trimmed = dealii::Utilities::trim(text);
-    std::size_t       used    = 0;
-    double            x       = 0;
-    try
-      {
-        x = std::stod(trimmed, &used);
-      }
-    catch (const std::exception &)
-      {
-        used = 0;
-      }
+    // strtod, not stod: a number below the smallest normal double (1e-308)
+    // is a number (it underflows towards 0); only overflow is refused.
+    char        *end  = nullptr;
+    const double x    = std::strtod(trimmed.c_str(), &end);
+    std::size_t  used = end - trimmed.c_str();
     if (used == 0 || used != trimmed.size() || !std::isfinite(x))
       throw InputError("", option, "'" + trimmed + "' is not a finite number");
     return x;

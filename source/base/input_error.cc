@@ -9,6 +9,27 @@ namespace RestShape
 {
   namespace
   {
+    /// Control bytes (NUL, escape sequences, carriage returns) in a file
+    /// name or a quoted input reach the terminal as "\xNN", line breaks
+    /// and tabs as spaces: an error stays one printable line.
+    std::string
+    printable(const std::string &text)
+    {
+      static const char *const hex = "0123456789abcdef";
+      std::string              result;
+      for (const char c : text)
+        {
+          const auto byte = static_cast<unsigned char>(c);
+          if (c == '\n' || c == '\t')
+            result += ' ';
+          else if (byte < 0x20 || byte == 0x7f)
+            result += std::string("\\x") + hex[byte >> 4] + hex[byte & 0xf];
+          else
+            result += c;
+        }
+      return result;
+    }
+
     std::string
     compose(const std::string &file,
             const std::string &parameter,
@@ -19,7 +40,7 @@ namespace RestShape
         text += file + ": ";
       if (!parameter.empty())
         text += parameter + ": ";
-      return text + message;
+      return printable(text + message);
     }
   } // namespace
 
@@ -57,7 +78,7 @@ namespace RestShape
     // Collapse all white space (deal.II indents and wraps its messages).
     std::string result;
     bool        space = false;
-    for (const char c : text)
+    for (const char c : printable(text))
       if (c == '\n' || c == '\t' || c == ' ' || c == '\r')
         space = !result.empty();
       else

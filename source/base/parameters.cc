@@ -213,12 +213,18 @@ namespace RestShape
       return std::string(values.per_label.empty() ? " (all labels)" :
                                                     " (the default '*')");
     };
+    // Beyond any material (diamond: 1.2e12 Pa; the softest tissues: 1e2):
+    // such values overflow the stiffness matrix or vanish in it.
+    constexpr double min_youngs_modulus = 1e-3, max_youngs_modulus = 1e15;
+    constexpr double max_density = 1e6; // kg/m^3 (osmium: 22,600)
     for (const auto &[label, E] : youngs_modulus.listed())
-      if (!(E > 0))
+      if (!(E >= min_youngs_modulus && E <= max_youngs_modulus))
         throw InputError("",
                          "Materials/Young's modulus",
                          "E = " + number_text(E) + " Pa" +
-                           where(youngs_modulus, label) + "; expected E > 0");
+                           where(youngs_modulus, label) + "; expected " +
+                           number_text(min_youngs_modulus) + " Pa <= E <= " +
+                           number_text(max_youngs_modulus) + " Pa");
     for (const auto &[label, nu] : poissons_ratio.listed())
       if (!(nu > -1 && nu < 0.5))
         throw InputError("",
@@ -227,11 +233,12 @@ namespace RestShape
                            where(poissons_ratio, label) +
                            "; expected -1 < nu < 0.5");
     for (const auto &[label, rho] : density.listed())
-      if (!(rho >= 0))
+      if (!(rho >= 0 && rho <= max_density))
         throw InputError("",
                          "Materials/Density",
                          "rho = " + number_text(rho) + " kg/m^3" +
-                           where(density, label) + "; expected rho >= 0");
+                           where(density, label) + "; expected 0 <= rho <= " +
+                           number_text(max_density) + " kg/m^3");
   }
 
   void

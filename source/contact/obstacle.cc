@@ -2,17 +2,22 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <restshape/base/input_error.h>
 #include <restshape/contact/obstacle.h>
+#include <restshape/contact/off_faces.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 
 namespace RestShape
@@ -88,6 +93,60 @@ namespace RestShape
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * Read @p file as a polygon soup, check it (CGAL's OBJ reader takes
+     * any face index: 0 or one past the last vertex crashed the repair
+     * that follows), repair it (STL stores every triangle with its own
+     * vertices), orient it consistently (the global orientation is
+     * checked by the caller) and make it a surface mesh.
+     */
+    void
+    read_surface(const std::string &file, Mesh &mesh)
+    {
+      std::vector<CPoint>                   points;
+      std::vector<std::vector<std::size_t>> polygons;
+      bool                                  ok = false;
+      check_off_faces(file, parameter);
+      try
+        {
+          ok = CGAL::IO::read_polygon_soup(file, points, polygons);
+        }
+      catch (...)
+        {
+          ok = false;
+        }
+      const auto fail = [&](const std::string &what) {
+        throw InputError(file, parameter, what);
+      };
+      if (!ok || polygons.empty())
+        fail("cannot be read as a polygon surface; expected a closed "
+             "triangulated surface");
+      for (const CPoint &p : points)
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()) ||
+            !std::isfinite(p.z()))
+          fail("a vertex has a coordinate that is not a finite number");
+      for (std::size_t f = 0; f < polygons.size(); ++f)
+        {
+          if (polygons[f].size() < 3)
+            fail("face " + std::to_string(f + 1) +
+                 " has fewer than 3 vertices");
+          for (const std::size_t v : polygons[f])
+            if (v >= points.size())
+              fail("face " + std::to_string(f + 1) +
+                   " refers to a vertex that does not exist (the file has " +
+                   std::to_string(points.size()) + " vertices)");
+        }
+      PMP::repair_polygon_soup(points, polygons);
+      if (!PMP::orient_polygon_soup(points, polygons) || polygons.empty())
+        fail("cannot be read as a polygon surface (it is not 2-manifold)");
+      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      if (mesh.number_of_faces() == 0)
+        fail("cannot be read as a polygon surface (it has no face)");
+    }
+  } // namespace
+
   Obstacle::Obstacle(const std::string &file,
                      const double       length_unit,
                      const bool         inside)
@@ -109,24 +168,8 @@ namespace RestShape
                        "unsupported format '" + extension +
                          "'; expected .stl, .off or .obj");
 
-    // The PMP reader repairs polygon soups (STL stores every triangle with
-    // its own vertices) and orients them consistently; the global
-    // orientation is checked below.
     Mesh &mesh = data->mesh;
-    bool  ok   = false;
-    try
-      {
-        ok = PMP::IO::read_polygon_mesh(file, mesh);
-      }
-    catch (...)
-      {
-        ok = false;
-      }
-    if (!ok || mesh.number_of_faces() == 0)
-      throw InputError(
-        file,
-        parameter,
-        "cannot be read as a polygon surface (or it is not 2-manifold)");
+    read_surface(file, mesh);
     if (!CGAL::is_triangle_mesh(mesh))
       PMP::triangulate_faces(mesh);
     if (!CGAL::is_closed(mesh))

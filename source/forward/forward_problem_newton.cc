@@ -237,6 +237,15 @@ namespace RestShape
                                     unsigned int    &corrections)
   {
     const double tol = parameters.solver.newton_tolerance;
+    if (!std::isfinite(residual) || !std::isfinite(reference))
+      {
+        stats.failure = format("the residual is not a finite number (|R| = "
+                               "%g N, |f| = %g N): the loads or the material "
+                               "values overflow double precision",
+                               residual,
+                               reference);
+        return NewtonState::failed;
+      }
     // Above the tolerance, a stalled Newton counts as converged only where
     // the residual is at the round-off level of its state, measured
     // (measure_round_off(): what one ulp of every displacement makes).

@@ -115,6 +115,9 @@ namespace RestShape
         AssertThrow(direct_solver != nullptr,
                     ExcMessage("MUMPS is not available in Amesos"));
         Teuchos::ParameterList list;
+        // No messages of Amesos's own: a failed factorisation is one
+        // SolverFailure with its figures, not five INFOG lines on stderr.
+        list.set("OutputLevel", 0);
         // Amesos passes MUMPS the whole matrix with SYM = 0 whatever its
         // MatrixProperty says (Trilinos bugs 2331/2332): MUMPS factorises
         // LU, symmetric or not (measured: the same flops either way).

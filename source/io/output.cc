@@ -7,7 +7,9 @@
 #include <restshape/io/vtu_cell_data.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 namespace RestShape
@@ -96,6 +98,32 @@ namespace RestShape
           return;
         }
     entries.emplace_back(key, value);
+  }
+
+  void
+  remove_previous_results(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    static const std::regex ours(
+      "summary\\.json|parameters\\.prm|solution\\.(pvd|visit)|"
+      "(solution-[0-9]+|prestressed_state)(\\.[0-9]+)?\\.(vtu|pvtu)|"
+      "iterations\\.csv|convergence\\.(csv|txt)|nodes\\.csv|"
+      "rest_shape\\.msh|prestress_comparison\\.csv|label_names\\.txt|"
+      ".*\\.tmp-[0-9]+");
+    std::error_code ec;
+    for (const auto &entry : fs::directory_iterator(directory, ec))
+      if (entry.is_regular_file(ec) &&
+          std::regex_match(entry.path().filename().string(), ours))
+        fs::remove(entry.path(), ec);
+  }
+
+  bool
+  Summary::has(const std::string &key) const
+  {
+    for (const auto &entry : entries)
+      if (entry.first == key)
+        return true;
+    return false;
   }
 
   void

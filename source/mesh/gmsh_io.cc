@@ -4,11 +4,15 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/label_values.h>
 #include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/gmsh_sections.h>
 #include <restshape/mesh/mesh_transforms.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -26,6 +30,11 @@ namespace RestShape
     const std::string file_parameter = "Mesh/File";
     const std::string target_name    = "target_position";
     const std::string mass_name      = "image_mass_ratio";
+    /// Bounds of an image-to-rest mass ratio (the volume ratio of a cell
+    /// between the image and the rest shape): beyond them the file is not
+    /// a rest shape of soft tissue.
+    constexpr double smallest_mass_ratio = 1e-3;
+    constexpr double largest_mass_ratio  = 1e3;
 
     /// The node data "target_position" and element data "image_mass_ratio"
     /// of the file open in gmsh (none, or both for every node and cell).
@@ -78,16 +87,29 @@ namespace RestShape
                                    std::to_string(tags[k]) +
                                    ", which is not in the mesh");
               if (nodes)
-                mesh.targets[it->second] =
-                  Point<3>(data[3 * k], data[3 * k + 1], data[3 * k + 2]) *
-                  length_unit;
-              else if (!(data[k] > 0))
+                {
+                  const Point<3> p(data[3 * k],
+                                   data[3 * k + 1],
+                                   data[3 * k + 2]);
+                  if (!std::isfinite(p.norm_square()))
+                    throw InputError(file,
+                                     file_parameter,
+                                     name + " of node " +
+                                       std::to_string(tags[k]) +
+                                       " is not a finite point; expected "
+                                       "three finite coordinates");
+                  mesh.targets[it->second] = p * length_unit;
+                }
+              else if (!(data[k] >= smallest_mass_ratio &&
+                         data[k] <= largest_mass_ratio))
                 throw InputError(file,
                                  file_parameter,
                                  name + " of element " +
                                    std::to_string(tags[k]) + " is " +
-                                   number_text(data[k]) +
-                                   "; expected a positive ratio");
+                                   number_text(data[k]) + "; expected " +
+                                   number_text(smallest_mass_ratio) +
+                                   " <= ratio <= " +
+                                   number_text(largest_mass_ratio));
               else
                 mesh.mass_ratios[it->second] = data[k];
             }
@@ -234,6 +256,57 @@ namespace RestShape
     return names;
   }
 
+  namespace
+  {
+    MeshDescription
+    read_with_gmsh(const std::string &file, const double length_unit);
+
+    /**
+     * Read @p file with the gmsh library once in a child process: gmsh's
+     * reader crashes on some malformed files (a segmentation fault in
+     * ConvertOldPartitioningToNewOne for gmsh 2 elements with bad partition
+     * tags, found by fuzzing), which must be an input error, not the end of
+     * the run. If the child dies of a signal, InputError; otherwise the
+     * caller reads the file itself (and reports its errors).
+     */
+    void
+    check_that_gmsh_survives(const std::string &file)
+    {
+      const pid_t pid = fork();
+      if (pid == 0)
+        {
+          // An error the reader throws is reported by the parent, which
+          // reads the file again; only a crash ends the child otherwise
+          // (a signal, or a sanitizer's non-zero exit).
+          try
+            {
+              read_with_gmsh(file, 1.);
+            }
+          catch (...)
+            {}
+          _exit(0);
+        }
+      if (pid < 0)
+        return; // no child: read in this process only
+      int status = 0;
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+      if (WIFSIGNALED(status))
+        throw InputError(file,
+                         file_parameter,
+                         "gmsh's reader crashed on this file (signal " +
+                           std::to_string(WTERMSIG(status)) + ", " +
+                           strsignal(WTERMSIG(status)) +
+                           "); expected a well-formed gmsh .msh mesh");
+      if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+        throw InputError(file,
+                         file_parameter,
+                         "gmsh's reader crashed on this file (exit code " +
+                           std::to_string(WEXITSTATUS(status)) +
+                           "); expected a well-formed gmsh .msh mesh");
+    }
+  } // namespace
+
   MeshDescription
   read_gmsh(const std::string &file, const double length_unit)
   {
@@ -247,118 +320,132 @@ namespace RestShape
       throw InputError(file,
                        file_parameter,
                        "not a readable file; expected a gmsh .msh mesh");
-
-    // The gmsh library reads every .msh version (ASCII or binary) and, unlike
-    // GridIn (which silently reorders the vertices of inverted tetrahedra),
-    // returns the connectivity in file order, which the orientation check
-    // needs.
-    MeshDescription result;
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 0);
-    try
-      {
-        gmsh::open(file);
-
-        std::vector<std::size_t> node_tags;
-        std::vector<double>      coordinates, parametric;
-        gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
-        std::map<std::size_t, unsigned int> index;
-        for (unsigned int n = 0; n < node_tags.size(); ++n)
-          {
-            for (unsigned int d = 0; d < 3; ++d)
-              if (!std::isfinite(coordinates[3 * n + d]))
-                throw InputError(
-                  file,
-                  file_parameter,
-                  "node " + std::to_string(node_tags[n]) +
-                    " has a coordinate that is not a finite number");
-            index[node_tags[n]] = n;
-            result.vertices.emplace_back(coordinates[3 * n] * length_unit,
-                                         coordinates[3 * n + 1] * length_unit,
-                                         coordinates[3 * n + 2] * length_unit);
-          }
-
-        std::map<std::size_t, unsigned int> cell_of_element;
-        gmsh::vectorpair                    entities;
-        gmsh::model::getEntities(entities, 3);
-        for (const auto &[dim, entity] : entities)
-          {
-            // The label: the entity's physical group, or its own tag.
-            std::vector<int> physical;
-            gmsh::model::getPhysicalGroupsForEntity(dim, entity, physical);
-            const int label = physical.empty() ? entity : physical[0];
-            if (label < 0)
-              throw InputError(file,
-                               file_parameter,
-                               "volume tag " + std::to_string(label) +
-                                 " is not a valid label; expected 0.." +
-                                 std::to_string(max_label));
-
-            std::vector<int>                      types;
-            std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-            gmsh::model::mesh::getElements(
-              types, element_tags, element_nodes, dim, entity);
-            for (unsigned int t = 0; t < types.size(); ++t)
-              {
-                if (types[t] != 4 && types[t] != 5)
-                  throw InputError(file,
-                                   file_parameter,
-                                   "the mesh has 3d elements of gmsh type " +
-                                     std::to_string(types[t]) +
-                                     "; expected only linear tetrahedra (4) or "
-                                     "hexahedra (5)");
-                const unsigned int n = (types[t] == 4 ? 4 : 8);
-                // gmsh numbers hexahedron vertices counter-clockwise per face.
-                static const unsigned int hex_order[8] = {
-                  0, 1, 3, 2, 4, 5, 7, 6};
-                for (unsigned int e = 0; e < element_tags[t].size(); ++e)
-                  {
-                    CellData<3> cell(n);
-                    for (unsigned int v = 0; v < n; ++v)
-                      {
-                        const auto it = index.find(
-                          element_nodes[t]
-                                       [n * e + (n == 4 ? v : hex_order[v])]);
-                        if (it == index.end())
-                          throw InputError(
-                            file,
-                            file_parameter,
-                            "element " + std::to_string(element_tags[t][e]) +
-                              " refers to a node that does not exist");
-                        cell.vertices[v] = it->second;
-                      }
-                    cell.material_id = label;
-                    result.cells.push_back(cell);
-                    cell_of_element[element_tags[t][e]] =
-                      result.cells.size() - 1;
-                  }
-              }
-          }
-        read_rest_shape_data(file, index, cell_of_element, length_unit, result);
-      }
-    catch (const InputError &)
-      {
-        gmsh::finalize();
-        throw;
-      }
-    catch (...)
-      {
-        std::string message;
-        gmsh::logger::getLastError(message);
-        gmsh::finalize();
-        throw InputError(file,
-                         file_parameter,
-                         "not a valid gmsh mesh (" +
-                           (message.empty() ? std::string("unreadable") :
-                                              message) +
-                           "); expected a gmsh .msh file with 3d cells");
-      }
-    gmsh::finalize();
-
-    result.names = read_gmsh_label_names(file);
-    return finish_read_mesh(std::move(result), file, file_parameter);
+    check_gmsh_section_counts(file, file_parameter);
+    check_that_gmsh_survives(file);
+    return read_with_gmsh(file, length_unit);
   }
+
+  namespace
+  {
+    MeshDescription
+    read_with_gmsh(const std::string &file, const double length_unit)
+    {
+      // The gmsh library reads every .msh version (ASCII or binary) and, unlike
+      // GridIn (which silently reorders the vertices of inverted tetrahedra),
+      // returns the connectivity in file order, which the orientation check
+      // needs.
+      MeshDescription result;
+      gmsh::initialize(0, nullptr, false);
+      gmsh::option::setNumber("General.Terminal", 0);
+      gmsh::option::setNumber("General.Verbosity", 0);
+      try
+        {
+          gmsh::open(file);
+
+          std::vector<std::size_t> node_tags;
+          std::vector<double>      coordinates, parametric;
+          gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
+          std::map<std::size_t, unsigned int> index;
+          for (unsigned int n = 0; n < node_tags.size(); ++n)
+            {
+              for (unsigned int d = 0; d < 3; ++d)
+                if (!std::isfinite(coordinates[3 * n + d]))
+                  throw InputError(
+                    file,
+                    file_parameter,
+                    "node " + std::to_string(node_tags[n]) +
+                      " has a coordinate that is not a finite number");
+              index[node_tags[n]] = n;
+              result.vertices.emplace_back(coordinates[3 * n] * length_unit,
+                                           coordinates[3 * n + 1] * length_unit,
+                                           coordinates[3 * n + 2] *
+                                             length_unit);
+            }
+
+          std::map<std::size_t, unsigned int> cell_of_element;
+          gmsh::vectorpair                    entities;
+          gmsh::model::getEntities(entities, 3);
+          for (const auto &[dim, entity] : entities)
+            {
+              // The label: the entity's physical group, or its own tag.
+              std::vector<int> physical;
+              gmsh::model::getPhysicalGroupsForEntity(dim, entity, physical);
+              const int label = physical.empty() ? entity : physical[0];
+              if (label < 0)
+                throw InputError(file,
+                                 file_parameter,
+                                 "volume tag " + std::to_string(label) +
+                                   " is not a valid label; expected 0.." +
+                                   std::to_string(max_label));
+
+              std::vector<int>                      types;
+              std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+              gmsh::model::mesh::getElements(
+                types, element_tags, element_nodes, dim, entity);
+              for (unsigned int t = 0; t < types.size(); ++t)
+                {
+                  if (types[t] != 4 && types[t] != 5)
+                    throw InputError(
+                      file,
+                      file_parameter,
+                      "the mesh has 3d elements of gmsh type " +
+                        std::to_string(types[t]) +
+                        "; expected only linear tetrahedra (4) or "
+                        "hexahedra (5)");
+                  const unsigned int n = (types[t] == 4 ? 4 : 8);
+                  // gmsh numbers hexahedron vertices counter-clockwise per
+                  // face.
+                  static const unsigned int hex_order[8] = {
+                    0, 1, 3, 2, 4, 5, 7, 6};
+                  for (unsigned int e = 0; e < element_tags[t].size(); ++e)
+                    {
+                      CellData<3> cell(n);
+                      for (unsigned int v = 0; v < n; ++v)
+                        {
+                          const auto it = index.find(
+                            element_nodes[t]
+                                         [n * e + (n == 4 ? v : hex_order[v])]);
+                          if (it == index.end())
+                            throw InputError(
+                              file,
+                              file_parameter,
+                              "element " + std::to_string(element_tags[t][e]) +
+                                " refers to a node that does not exist");
+                          cell.vertices[v] = it->second;
+                        }
+                      cell.material_id = label;
+                      result.cells.push_back(cell);
+                      cell_of_element[element_tags[t][e]] =
+                        result.cells.size() - 1;
+                    }
+                }
+            }
+          read_rest_shape_data(
+            file, index, cell_of_element, length_unit, result);
+        }
+      catch (const InputError &)
+        {
+          gmsh::finalize();
+          throw;
+        }
+      catch (...)
+        {
+          std::string message;
+          gmsh::logger::getLastError(message);
+          gmsh::finalize();
+          throw InputError(file,
+                           file_parameter,
+                           "not a valid gmsh mesh (" +
+                             (message.empty() ? std::string("unreadable") :
+                                                message) +
+                             "); expected a gmsh .msh file with 3d cells");
+        }
+      gmsh::finalize();
+
+      result.names = read_gmsh_label_names(file);
+      return finish_read_mesh(std::move(result), file, file_parameter);
+    }
+  } // namespace
 
   MeshDescription
   finish_read_mesh(MeshDescription    mesh,

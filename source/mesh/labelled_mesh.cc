@@ -20,7 +20,9 @@ namespace RestShape
 {
   using namespace dealii;
 
-  LabelledMesh::LabelledMesh(const MeshParameters &prm, const MPI_Comm comm)
+  LabelledMesh::LabelledMesh(const MeshParameters &prm,
+                             const MPI_Comm        comm,
+                             const SizeCheck      &check_size)
     : parameters(prm)
     , names(scene_label_names(prm))
   {
@@ -46,13 +48,22 @@ namespace RestShape
         check_mesh(mesh, prm.file);
       }
 
-    const MeshPieces pieces = face_connected_pieces(mesh);
-    if (pieces.n_cells.size() > 1 &&
+    if (check_size)
+      check_size(mesh.cells.size());
+
+    const auto found =
+      std::make_shared<MeshPieces>(face_connected_pieces(mesh));
+    if (found->n_cells.size() > 1)
+      {
+        pieces      = found;
+        pieces_mesh = std::make_shared<MeshDescription>(mesh);
+      }
+    if (found->n_cells.size() > 1 &&
         Utilities::MPI::this_mpi_process(comm) == 0)
       std::cout << "Warning: " << prm.file << " (Mesh/File) has "
-                << pieces.n_cells.size() << " pieces not joined by faces ("
-                << pieces.n_cells[0] << " cells in the largest, "
-                << pieces.n_cells.back()
+                << found->n_cells.size() << " pieces not joined by faces ("
+                << found->n_cells[0] << " cells in the largest, "
+                << found->n_cells.back()
                 << " in the smallest). A piece held at a vertex or an edge "
                    "can rotate freely about it and stop Newton's method; "
                    "restshape-mesh removes small ones."
@@ -87,6 +98,14 @@ namespace RestShape
     create_triangulation(std::move(mesh));
     for (unsigned int r = 0; !partition && r < prm.global_refinements; ++r)
       refine_global();
+  }
+
+  std::vector<UnheldPiece>
+  LabelledMesh::unheld_pieces(const std::set<Label> &held_labels) const
+  {
+    if (!pieces)
+      return {};
+    return RestShape::unheld_pieces(*pieces_mesh, *pieces, held_labels);
   }
 
   LabelNames

@@ -1,8 +1,9 @@
-// VTK legacy and Abaqus meshes; read_mesh() by extension.
+// VTK legacy meshes; read_mesh() by extension (Abaqus: abaqus_reader.cc).
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
 #include <restshape/mesh/gmsh_io.h>
+#include <restshape/mesh/mesh_file_reading.h>
 #include <restshape/mesh/mesh_formats.h>
 #include <restshape/mesh/mesh_transforms.h>
 #include <restshape/mesh/vtk_grid.h>
@@ -23,11 +24,14 @@ namespace RestShape
 
   namespace
   {
+    const std::string legacy_format = "a VTK legacy ASCII unstructured grid";
+  } // namespace
+
+  namespace MeshFileReading
+  {
     /// gmsh, VTK and Abaqus number hexahedron vertices counter-clockwise
     /// per face; deal.II lexicographically.
     constexpr unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
-
-    const std::string legacy_format = "a VTK legacy ASCII unstructured grid";
 
     std::string
     lower(std::string text)
@@ -49,7 +53,6 @@ namespace RestShape
       return in;
     }
 
-    /// A cell from its vertex numbers in file order (hexahedra reordered).
     CellData<3>
     make_cell(const std::vector<unsigned int> &vertices)
     {
@@ -58,8 +61,9 @@ namespace RestShape
         cell.vertices[v] = vertices[vertices.size() == 8 ? hex_order[v] : v];
       return cell;
     }
+  } // namespace MeshFileReading
 
-  } // namespace
+  using namespace MeshFileReading;
 
   // ---------------------------------------------------------------- VTK
 
@@ -73,7 +77,28 @@ namespace RestShape
         : in(in)
         , file(std::move(file))
         , parameter(std::move(parameter))
-      {}
+      {
+        const auto here = in.tellg();
+        in.seekg(0, std::ios::end);
+        end_of_file = in.tellg();
+        in.seekg(here);
+      }
+
+      /// A count of items of @p words_per_item numbers each, checked
+      /// against what the rest of the file can hold (two characters a
+      /// number at least) before anything is allocated for them.
+      long
+      count(const std::string &what, const double words_per_item = 1)
+      {
+        const long n = integer(what);
+        if (n < 0)
+          fail(what + " declares " + std::to_string(n) + " items");
+        const double left = double(end_of_file - in.tellg()) / 2 + 1;
+        if (double(n) * words_per_item > left)
+          fail(what + " declares " + std::to_string(n) +
+               " items, more than the rest of the file holds");
+        return n;
+      }
 
       bool
       next(std::string &word)
@@ -129,6 +154,7 @@ namespace RestShape
     private:
       std::istream     &in;
       const std::string file, parameter;
+      std::streampos    end_of_file;
     };
 
     /// CELLS of file version 5.1: OFFSETS and CONNECTIVITY arrays.
@@ -136,6 +162,8 @@ namespace RestShape
     read_vtk_offsets(VtkWords &words, const long n_offsets, const long size)
     {
       words.word("OFFSETS type");
+      if (n_offsets < 1)
+        words.fail("OFFSETS needs at least one entry");
       std::vector<long> offsets(n_offsets);
       for (long &o : offsets)
         o = words.integer("OFFSETS");
@@ -169,7 +197,8 @@ namespace RestShape
     std::vector<std::vector<long>>
     read_vtk_cells(VtkWords &words)
     {
-      const long  n = words.integer("CELLS"), size = words.integer("CELLS");
+      // Each cell is at least two numbers ("1 v"); size counts them all.
+      const long  n = words.count("CELLS", 2), size = words.count("CELLS");
       std::string peek = words.word("CELLS");
       if (peek == "OFFSETS")
         return read_vtk_offsets(words, n, size);
@@ -182,6 +211,9 @@ namespace RestShape
         {
           if (c > 0)
             k = words.integer("CELLS");
+          if (k < 0 || k > size)
+            words.fail("a cell of " + std::to_string(k) +
+                       " points in CELLS of size " + std::to_string(size));
           cells[c].resize(k);
           for (long &v : cells[c])
             v = words.integer("CELLS");
@@ -212,8 +244,10 @@ namespace RestShape
             }
           else
             {
-              name     = words.word("the array name");
-              n_values = words.integer(name) * words.integer(name);
+              name                  = words.word("the array name");
+              const long components = words.count(name);
+              n_values              = words.count(name, double(components));
+              n_values *= components;
               words.word("the array type");
             }
           std::vector<double> values(n_values);
@@ -233,7 +267,7 @@ namespace RestShape
       while (words.next(key))
         if (key == "POINTS")
           {
-            const long n = words.integer("POINTS");
+            const long n = words.count("POINTS", 3);
             words.word("the POINTS type");
             for (long p = 0; p < n; ++p)
               {
@@ -247,7 +281,7 @@ namespace RestShape
           content.cells = read_vtk_cells(words);
         else if (key == "CELL_TYPES")
           {
-            content.types.resize(words.integer("CELL_TYPES"));
+            content.types.resize(words.count("CELL_TYPES"));
             for (long &t : content.types)
               t = words.integer("CELL_TYPES");
           }
@@ -332,9 +366,10 @@ namespace RestShape
         const long        type      = grid.types[i];
         if (type != 10 && type != 12)
           {
-            if (type >= 10)
+            // VTK's 0d-2d linear cells (vertex 1 ... quad 9) are ignored.
+            if (type < 1 || type >= 10)
               fail(cell_text + " has VTK type " + std::to_string(type) +
-                   "; expected linear tetrahedra (10) or hexahedra (12)");
+                   ", not a linear tetrahedron (10) or hexahedron (12)");
             continue; // vertices, lines, faces
           }
         std::vector<unsigned int> v;
@@ -354,228 +389,6 @@ namespace RestShape
         cell.material_id = Label(labels[i]);
         mesh.cells.push_back(cell);
       }
-    return finish_read_mesh(std::move(mesh), file, parameter);
-  }
-
-  // ------------------------------------------------------------- Abaqus
-
-  namespace
-  {
-    /// An Abaqus keyword line "*Element, type=C3D4, elset=brain": the
-    /// keyword and its options (lower-case keys).
-    struct Keyword
-    {
-      std::string                        name;
-      std::map<std::string, std::string> options;
-    };
-
-    Keyword
-    parse_keyword(const std::string &line)
-    {
-      Keyword    k;
-      const auto parts = Utilities::split_string_list(line.substr(1), ',');
-      k.name           = parts.empty() ? "" : lower(parts[0]);
-      for (unsigned int i = 1; i < parts.size(); ++i)
-        {
-          const auto eq = parts[i].find('=');
-          k.options[lower(Utilities::trim(parts[i].substr(0, eq)))] =
-            eq == std::string::npos ? "" :
-                                      Utilities::trim(parts[i].substr(eq + 1));
-        }
-      return k;
-    }
-
-    /// The whole numbers of a data line "1, 2, 3".
-    std::vector<long>
-    integers(const std::string &line,
-             const std::string &file,
-             const std::string &parameter,
-             const unsigned int line_number)
-    {
-      std::vector<long> values;
-      for (const std::string &item : Utilities::split_string_list(line, ','))
-        {
-          if (item.empty())
-            continue;
-          char      *end = nullptr;
-          const long v   = std::strtol(item.c_str(), &end, 10);
-          if (end == item.c_str() || *end != '\0')
-            throw InputError(file,
-                             parameter,
-                             "line " + std::to_string(line_number) + ": '" +
-                               item + "' is not a whole number");
-          values.push_back(v);
-        }
-      return values;
-    }
-
-    /// What an Abaqus file holds before it becomes a description.
-    struct AbaqusModel
-    {
-      std::map<long, unsigned int>      node_index;
-      std::vector<Point<3>>             nodes;
-      std::map<long, std::vector<long>> elements; // 3d ones, by number
-      std::map<long, unsigned int>      set_of;   // element -> set
-      std::vector<std::string>          sets;     // in order of appearance
-
-      unsigned int
-      set_number(const std::string &name)
-      {
-        const auto it = std::find(sets.begin(), sets.end(), name);
-        if (it != sets.end())
-          return it - sets.begin();
-        sets.push_back(name);
-        return sets.size() - 1;
-      }
-    };
-
-    AbaqusModel
-    read_abaqus_model(const std::string &file, const std::string &parameter)
-    {
-      std::ifstream in = open(file, parameter);
-      AbaqusModel   model;
-      std::string   line, block;
-      Keyword       keyword;
-      unsigned int  line_number = 0, nodes_per_element = 0;
-      long          set  = -1;
-      const auto    fail = [&](const std::string &message) {
-        throw InputError(file,
-                         parameter,
-                         "line " + std::to_string(line_number) + ": " +
-                           message);
-      };
-      while (std::getline(in, line))
-        {
-          ++line_number;
-          line = Utilities::trim(line);
-          if (line.empty() || line.rfind("**", 0) == 0)
-            continue;
-          if (line[0] == '*')
-            {
-              keyword = parse_keyword(line);
-              block   = keyword.name;
-              set     = -1;
-              if (block == "element")
-                {
-                  const std::string type = lower(keyword.options["type"]);
-                  nodes_per_element      = type == "c3d4" ? 4 :
-                                           type == "c3d8" ? 8 :
-                                                            0;
-                  if (nodes_per_element == 0 && type.rfind("c3d", 0) == 0)
-                    fail("element type " + keyword.options["type"] +
-                         "; expected C3D4 or C3D8 (linear tetrahedra or "
-                         "hexahedra)");
-                }
-              const std::string elset = keyword.options["elset"];
-              if ((block == "element" && nodes_per_element > 0 &&
-                   !elset.empty()) ||
-                  block == "elset")
-                {
-                  if (elset.empty())
-                    fail("*Elset without ELSET=");
-                  set = model.set_number(elset);
-                }
-              continue;
-            }
-          if (block == "node")
-            {
-              const auto items = Utilities::split_string_list(line, ',');
-              if (items.size() < 4)
-                fail("expected 'number, x, y, z'");
-              Point<3> x;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const std::string item = Utilities::trim(items[d + 1]);
-                  char             *end  = nullptr;
-                  x[d]                   = std::strtod(item.c_str(), &end);
-                  if (end == item.c_str() || *end != '\0' ||
-                      !std::isfinite(x[d]))
-                    fail("'" + item + "' is not a finite coordinate");
-                }
-              model.node_index[integers(
-                items[0], file, parameter, line_number)[0]] =
-                model.nodes.size();
-              model.nodes.push_back(x);
-            }
-          else if (block == "element" && nodes_per_element > 0)
-            {
-              const std::vector<long> v =
-                integers(line, file, parameter, line_number);
-              if (v.size() != nodes_per_element + 1)
-                fail("expected the element's number and " +
-                     std::to_string(nodes_per_element) + " nodes");
-              model.elements[v[0]].assign(v.begin() + 1, v.end());
-              if (set >= 0)
-                model.set_of[v[0]] = set;
-            }
-          else if (block == "elset")
-            {
-              std::vector<long> v =
-                integers(line, file, parameter, line_number);
-              if (keyword.options.count("generate"))
-                {
-                  if (v.size() < 2 || v.size() > 3 ||
-                      (v.size() == 3 && v[2] <= 0))
-                    fail("expected 'first, last[, step]' for GENERATE");
-                  const long        step = v.size() == 3 ? v[2] : 1;
-                  std::vector<long> range;
-                  for (long e = v[0]; e <= v[1]; e += step)
-                    range.push_back(e);
-                  v = range;
-                }
-              for (const long e : v)
-                model.set_of[e] = set;
-            }
-        }
-      return model;
-    }
-  } // namespace
-
-  MeshDescription
-  read_abaqus_mesh(const std::string &file,
-                   const double       length_unit,
-                   const std::string &parameter)
-  {
-    AbaqusModel     model = read_abaqus_model(file, parameter);
-    MeshDescription mesh;
-    for (const Point<3> &x : model.nodes)
-      mesh.vertices.push_back(x * length_unit);
-    // Sets that hold 3d elements become labels 1, 2, ...
-    std::map<unsigned int, Label> label_of_set;
-    for (const auto &[element, nodes] : model.elements)
-      {
-        const auto set = model.set_of.find(element);
-        if (set == model.set_of.end())
-          throw InputError(file,
-                           parameter,
-                           "element " + std::to_string(element) +
-                             " is in no element set; expected every "
-                             "element labelled by an ELSET");
-        label_of_set.emplace(set->second, 0);
-        std::vector<unsigned int> v;
-        for (const long n : nodes)
-          {
-            const auto it = model.node_index.find(n);
-            if (it == model.node_index.end())
-              throw InputError(file,
-                               parameter,
-                               "element " + std::to_string(element) +
-                                 " refers to node " + std::to_string(n) +
-                                 ", which does not exist");
-            v.push_back(it->second);
-          }
-        mesh.cells.push_back(make_cell(v));
-        mesh.cells.back().material_id = set->second;
-      }
-    Label next = 1;
-    for (auto &[set, label] : label_of_set)
-      {
-        label = next++;
-        if (LabelNames::is_valid_name(model.sets[set]))
-          mesh.names.add(label, model.sets[set], file, parameter);
-      }
-    for (auto &cell : mesh.cells)
-      cell.material_id = label_of_set[cell.material_id];
     return finish_read_mesh(std::move(mesh), file, parameter);
   }
 

@@ -131,6 +131,116 @@ namespace RestShape
     return pieces;
   }
 
+  namespace
+  {
+    /// True if @p points span at least a plane (three not on one line).
+    bool
+    span_a_plane(const std::vector<dealii::Point<3>> &points)
+    {
+      for (unsigned int i = 1; i < points.size(); ++i)
+        for (unsigned int j = i + 1; j < points.size(); ++j)
+          {
+            const auto   a     = points[i] - points[0];
+            const auto   b     = points[j] - points[0];
+            const double scale = a.norm() * b.norm();
+            if (dealii::cross_product_3d(a, b).norm() > 1e-8 * scale &&
+                scale > 0)
+              return true;
+          }
+      return false;
+    }
+  } // namespace
+
+  std::string
+  UnheldPiece::text(const double unit_to_mm) const
+  {
+    std::ostringstream out;
+    out << "a piece of " << n_cells << " cell" << (n_cells == 1 ? "" : "s")
+        << " (label" << (labels.size() == 1 ? " " : "s ");
+    bool first = true;
+    for (const Label l : labels)
+      {
+        out << (first ? "" : ", ") << l;
+        first = false;
+      }
+    out << ") around (" << centre[0] * unit_to_mm << ", "
+        << centre[1] * unit_to_mm << ", " << centre[2] * unit_to_mm << ") mm "
+        << (n_joints == 0 ? "floats freely" :
+            n_joints == 1 ? "pivots about the one vertex joining it to the "
+                            "held body" :
+                            "hinges about the edge joining it to the held "
+                            "body");
+    return out.str();
+  }
+
+  std::vector<UnheldPiece>
+  unheld_pieces(const MeshDescription &mesh,
+                const MeshPieces      &pieces,
+                const std::set<Label> &held_labels)
+  {
+    const unsigned int n_pieces = pieces.n_cells.size();
+    // The pieces each vertex belongs to.
+    std::vector<std::vector<unsigned int>> pieces_of_vertex(
+      mesh.vertices.size());
+    std::vector<bool> held(n_pieces, false);
+    for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+      {
+        const unsigned int p = pieces.piece_of_cell[c];
+        held[p] = held[p] || held_labels.count(mesh.cells[c].material_id);
+        for (const unsigned int v : mesh.cells[c].vertices)
+          if (std::find(pieces_of_vertex[v].begin(),
+                        pieces_of_vertex[v].end(),
+                        p) == pieces_of_vertex[v].end())
+            pieces_of_vertex[v].push_back(p);
+      }
+    // Joints with held pieces, until nothing changes.
+    std::vector<std::vector<dealii::Point<3>>> joints(n_pieces);
+    for (bool changed = true; changed;)
+      {
+        changed = false;
+        for (auto &j : joints)
+          j.clear();
+        for (unsigned int v = 0; v < pieces_of_vertex.size(); ++v)
+          {
+            const auto &ps = pieces_of_vertex[v];
+            const bool  next_to_held =
+              std::any_of(ps.begin(), ps.end(), [&](const unsigned int p) {
+                return held[p];
+              });
+            if (next_to_held)
+              for (const unsigned int p : ps)
+                if (!held[p])
+                  joints[p].push_back(mesh.vertices[v]);
+          }
+        for (unsigned int p = 0; p < n_pieces; ++p)
+          if (!held[p] && span_a_plane(joints[p]))
+            held[p] = changed = true;
+      }
+
+    std::vector<UnheldPiece>  result(n_pieces);
+    std::vector<unsigned int> n_vertices(n_pieces, 0);
+    for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+      {
+        const unsigned int p = pieces.piece_of_cell[c];
+        ++result[p].n_cells;
+        result[p].labels.insert(mesh.cells[c].material_id);
+        for (const unsigned int v : mesh.cells[c].vertices)
+          {
+            result[p].centre += mesh.vertices[v];
+            ++n_vertices[p];
+          }
+      }
+    std::vector<UnheldPiece> unheld;
+    for (unsigned int p = 0; p < n_pieces; ++p)
+      if (!held[p])
+        {
+          result[p].centre /= n_vertices[p];
+          result[p].n_joints = joints[p].size();
+          unheld.push_back(result[p]);
+        }
+    return unheld;
+  }
+
   RemovedPieces
   remove_small_pieces(MeshDescription &mesh, const double fraction)
   {

@@ -9,8 +9,10 @@
 #include <restshape/mesh/vtk_grid.h>
 #include <zlib.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -85,6 +87,9 @@ namespace RestShape
       return f.compressed ? 3 + header_word(first_words, 0, f) : 1;
     }
 
+    /// The largest ratio of data to zlib-compressed bytes.
+    constexpr std::uint64_t max_zlib_ratio = 1032;
+
     /// The data bytes of a binary block whose header is followed by
     /// @p payload: as stored, or the zlib blocks uncompressed.
     Bytes
@@ -107,6 +112,10 @@ namespace RestShape
           uLongf size = (b + 1 == n_blocks && last != 0) ? last : block;
           if (at + stored > payload.size())
             f.fail("a compressed data array is shorter than its header says");
+          // zlib expands by at most 1032:1.
+          if (size > max_zlib_ratio * stored + 1024)
+            f.fail("a compressed block claims " + std::to_string(size) +
+                   " bytes from " + std::to_string(stored));
           const std::size_t old = data.size();
           data.resize(old + size);
           if (uncompress(
@@ -200,6 +209,22 @@ namespace RestShape
       f.fail("data array type '" + type + "'");
     }
 
+    /// A count or offset attribute ("NumberOfCells"): a whole number >= 0,
+    /// 0 if absent.
+    std::size_t
+    attribute_count(const ptree       &element,
+                    const std::string &name,
+                    const VtuFile     &f)
+    {
+      const std::string text         = element.get("<xmlattr>." + name, "0");
+      char             *end          = nullptr;
+      errno                          = 0;
+      const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+      if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0)
+        f.fail(name + "=\"" + text + "\"; expected a whole number >= 0");
+      return value;
+    }
+
     /// The values of a <DataArray>, @p expected of them.
     std::vector<double>
     data_array(const ptree &array, const std::size_t expected, const VtuFile &f)
@@ -219,8 +244,10 @@ namespace RestShape
         values = numbers(base64_block(array.data(), f), type, f);
       else if (format == "appended")
         {
-          const std::size_t offset =
-            array.get<std::size_t>("<xmlattr>.offset", 0);
+          const std::size_t offset = attribute_count(array, "offset", f);
+          if (offset > f.appended.size())
+            f.fail("data array '" + name +
+                   "' has an offset beyond the appended data");
           values = numbers(f.appended_base64 ?
                              base64_block(f.appended.substr(offset), f) :
                              raw_block(offset, f),
@@ -249,6 +276,32 @@ namespace RestShape
       f.fail("no '" + name + "' array in <Cells>");
     }
 
+    /// XML elements nested deeper than this are refused before parsing
+    /// (the parser recurses once per level: 200,000 levels crashed it).
+    constexpr unsigned int max_nesting = 64;
+
+    void
+    check_nesting(const std::string &text, const VtuFile &f)
+    {
+      unsigned int depth = 0;
+      for (std::size_t at = text.find('<'); at != std::string::npos;
+           at             = text.find('<', at + 1))
+        {
+                      const char next = at + 1 < text.size() ? text[at + 1] : '\0';
+                      if (next == '/')
+            depth -= depth > 0;
+          else if (next != '?' && next != '!')
+            {
+                          const auto close = text.find('>', at);
+                          if (close != std::string::npos && text[close - 1] == '/')
+                continue; // <empty/>
+              if (++depth > max_nesting)
+                f.fail("XML elements nested more than " +
+                       std::to_string(max_nesting) + " deep");
+            }
+        }
+    }
+
     /// Split off the appended data (raw bytes are not XML) and parse the
     /// rest.
     ptree
@@ -268,6 +321,7 @@ namespace RestShape
           f.appended = text.substr(start + 1, end - start - 1);
           text       = text.substr(0, tag) + "</VTKFile>";
         }
+      check_nesting(text, f);
       std::istringstream in(text);
       ptree              tree;
       try
@@ -302,9 +356,17 @@ namespace RestShape
       return grid->get_child("Piece");
     }
 
+    /// The values, which must be whole numbers (a connectivity of 0.5, a
+    /// label of 1.5 were truncated).
     std::vector<long>
-    whole_numbers(const std::vector<double> &values)
+    whole_numbers(const std::vector<double> &values,
+                  const std::string         &name,
+                  const VtuFile             &f)
     {
+      for (const double v : values)
+        if (v != std::floor(v) || std::abs(v) > 9.2e18)
+          f.fail("data array '" + name + "' holds " + number_text(v) +
+                 ", not a whole number");
       return std::vector<long>(values.begin(), values.end());
     }
   } // namespace
@@ -322,14 +384,12 @@ namespace RestShape
       f.fail("not a readable file");
     std::ostringstream text;
     text << in.rdbuf();
-    const ptree       tree  = parse(text.str(), f);
-    const ptree      &piece = read_header(tree, f);
-    const std::size_t n_points =
-                        piece.get<std::size_t>("<xmlattr>.NumberOfPoints", 0),
-                      n_cells =
-                        piece.get<std::size_t>("<xmlattr>.NumberOfCells", 0);
-    const auto points = piece.get_child_optional("Points.DataArray");
-    const auto cells  = piece.get_child_optional("Cells");
+    const ptree       tree     = parse(text.str(), f);
+    const ptree      &piece    = read_header(tree, f);
+    const std::size_t n_points = attribute_count(piece, "NumberOfPoints", f),
+                      n_cells  = attribute_count(piece, "NumberOfCells", f);
+    const auto points          = piece.get_child_optional("Points.DataArray");
+    const auto cells           = piece.get_child_optional("Cells");
     if (!points || !cells)
       f.fail("no <Points> or no <Cells> in the <Piece>");
     VtkGrid                   grid;
@@ -339,12 +399,22 @@ namespace RestShape
                                length_unit * xyz[3 * p + 1],
                                length_unit * xyz[3 * p + 2]);
     grid.types =
-      whole_numbers(data_array(named_array(*cells, "types", f), n_cells, f));
+      whole_numbers(data_array(named_array(*cells, "types", f), n_cells, f),
+                    "types",
+                    f);
     const std::vector<long> offsets =
-      whole_numbers(data_array(named_array(*cells, "offsets", f), n_cells, f));
+      whole_numbers(data_array(named_array(*cells, "offsets", f), n_cells, f),
+                    "offsets",
+                    f);
+    if (n_cells > 0 && offsets.back() < 0)
+      f.fail("the offsets of <Cells> are negative");
     const ptree &connectivity_array = named_array(*cells, "connectivity", f);
-    const std::vector<long> connectivity = whole_numbers(data_array(
-      connectivity_array, n_cells == 0 ? 0 : std::size_t(offsets.back()), f));
+    const std::vector<long> connectivity =
+      whole_numbers(data_array(connectivity_array,
+                               n_cells == 0 ? 0 : std::size_t(offsets.back()),
+                               f),
+                    "connectivity",
+                    f);
     for (std::size_t c = 0; c < n_cells; ++c)
       {
         const long begin = c == 0 ? 0 : offsets[c - 1];
@@ -359,7 +429,9 @@ namespace RestShape
       if (tag == "DataArray" &&
           array.get("<xmlattr>.NumberOfComponents", 1) == 1)
         grid.arrays[array.get("<xmlattr>.Name", "")] =
-          whole_numbers(data_array(array, n_cells, f));
+          whole_numbers(data_array(array, n_cells, f),
+                        array.get("<xmlattr>.Name", ""),
+                        f);
     return vtk_grid_to_mesh(grid, file, parameter, vtu_format);
   }
 } // namespace RestShape

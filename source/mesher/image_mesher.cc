@@ -11,6 +11,7 @@
 #include <CGAL/make_mesh_3.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/machine_memory.h>
 #include <restshape/mesh/mesh_description.h>
 #include <restshape/mesher/image_mesher.h>
 #include <restshape/mesher/image_morphology.h>
@@ -220,6 +221,54 @@ namespace RestShape
     return q;
   }
 
+  namespace
+  {
+    /// Bytes per voxel of the skull's distance grid: the region, its
+    /// complement and two distance fields.
+    constexpr double skull_grid_bytes_per_voxel = 2 + 2 * sizeof(double);
+    /// The share of the machine's memory the grid may take.
+    constexpr double skull_grid_memory_share = 0.5;
+
+    /// A grid padded by the gap that cannot fit the machine is refused.
+    void
+    check_skull_grid(const std::array<double, 3> &n, const double gap)
+    {
+      const double voxels = n[0] * n[1] * n[2];
+      const double bytes  = voxels * skull_grid_bytes_per_voxel;
+      const double memory = physical_memory_bytes();
+      if (memory > 0 && bytes > skull_grid_memory_share * memory)
+        throw InputError("",
+                         "--skull-gap",
+                         "a gap of " + number_text(gap) +
+                           " mm needs a distance grid of " +
+                           number_text(voxels) + " voxels (" +
+                           number_text(bytes / bytes_per_gibibyte) +
+                           " GiB), more than this machine can hold; "
+                           "expected a gap of a few mm");
+    }
+
+    /// A skull cutting deeper than the labelled region is thick encloses
+    /// nothing: @p dist is the signed distance (negative inside).
+    void
+    check_gap_leaves_a_region(const std::vector<double> &dist,
+                              const double               gap,
+                              const double               h_min)
+    {
+      const double deepest = *std::min_element(dist.begin(), dist.end());
+      // At least a voxel of the region must lie inside the skull.
+      if (gap - h_min > deepest)
+        return;
+      throw InputError("",
+                       "--skull-gap",
+                       "a skull " + number_text(-gap) +
+                         " mm inside the labelled region's surface encloses "
+                         "nothing of it (its deepest voxel lies " +
+                         number_text(-deepest) +
+                         " mm inside); expected a gap above " +
+                         number_text(deepest + h_min) + " mm");
+    }
+  } // namespace
+
   unsigned int
   write_enclosing_surface(const LabelledImage &image,
                           const double         gap,
@@ -233,7 +282,13 @@ namespace RestShape
     const double  h_min = *std::min_element(h.begin(), h.end());
 
     // The distance grid: the image padded so that the level set fits.
-    const int pad = int(std::ceil((closing + gap + facet_size) / h_min)) + 2;
+    const double pad_voxels =
+      std::max(0., std::ceil((closing + gap + facet_size) / h_min)) + 2;
+    std::array<double, 3> padded;
+    for (unsigned int d = 0; d < 3; ++d)
+      padded[d] = image.size[d] + 2 * pad_voxels;
+    check_skull_grid(padded, gap);
+    const int                   pad = int(pad_voxels);
     std::array<unsigned int, 3> n;
     for (unsigned int d = 0; d < 3; ++d)
       n[d] = image.size[d] + 2 * pad;
@@ -263,6 +318,8 @@ namespace RestShape
         dist[v] =
           region[v] ? -(inward[v] - 0.5 * h_min) : dist[v] - 0.5 * h_min;
     }
+
+    check_gap_leaves_a_region(dist, gap, h_min);
 
     // The signed distance minus the gap, trilinear, in scaled index space
     // of the unpadded image.
@@ -319,6 +376,12 @@ namespace RestShape
 
     CGAL::Surface_mesh<Point> surface;
     CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, surface);
+    if (surface.number_of_faces() == 0)
+      throw InputError(file,
+                       "--skull-gap",
+                       "the skull surface at a gap of " + number_text(gap) +
+                         " mm is empty; expected a gap that leaves the "
+                         "labelled region a surface");
     for (const auto vertex : surface.vertices())
       {
         const Point &p        = surface.point(vertex);

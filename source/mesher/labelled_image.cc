@@ -1,3 +1,4 @@
+#include <fcntl.h>
 #include <nifti2_io.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
@@ -110,6 +111,71 @@ namespace RestShape
     }
   } // namespace
 
+  namespace
+  {
+    /// Voxel sizes of an image, in mm, from microscopy to a coarse scan
+    /// (beyond them the header's units are wrong).
+    constexpr double smallest_voxel_mm = 1e-4;
+    constexpr double largest_voxel_mm  = 1e3;
+    /// The largest distance of the image's origin from the scanner's, mm.
+    constexpr double largest_offset_mm = 1e6;
+
+    /// The process's standard error goes to /dev/null while it lives.
+    class SilencedStderr
+    {
+    public:
+      SilencedStderr()
+        : saved(::dup(STDERR_FILENO))
+      {
+        std::fflush(stderr);
+        const int null = ::open("/dev/null", O_WRONLY);
+        if (null >= 0)
+          {
+            ::dup2(null, STDERR_FILENO);
+            ::close(null);
+          }
+      }
+      ~SilencedStderr()
+      {
+        std::fflush(stderr);
+        if (saved >= 0)
+          {
+            ::dup2(saved, STDERR_FILENO);
+            ::close(saved);
+          }
+      }
+
+    private:
+      const int saved;
+    };
+
+    /// Voxel sizes and origin within the bounds above.
+    void
+    check_geometry(const LabelledImage &image,
+                   const std::string   &file,
+                   const std::string   &parameter)
+    {
+      for (const double h : image.spacing())
+        if (!(h >= smallest_voxel_mm && h <= largest_voxel_mm))
+          throw InputError(file,
+                           parameter,
+                           "a voxel size of " + number_text(h) +
+                             " mm in the header; expected " +
+                             number_text(smallest_voxel_mm) + " to " +
+                             number_text(largest_voxel_mm) +
+                             " mm (pixdim, or the sform/qform, in mm)");
+      for (unsigned int d = 0; d < 3; ++d)
+        if (!(std::abs(image.offset[d]) <= largest_offset_mm))
+          throw InputError(file,
+                           parameter,
+                           "the header puts the image's origin at " +
+                             number_text(image.offset[d]) + " mm along axis " +
+                             std::to_string(d) +
+                             "; expected a finite offset of at most " +
+                             number_text(largest_offset_mm) + " mm");
+    }
+  } // namespace
+
   LabelledImage
   read_labelled_image(const std::string &file, const std::string &parameter)
   {
@@ -122,8 +188,13 @@ namespace RestShape
                  "(.nii or .nii.gz)");
 
     nifti_set_debug_level(0);
-    std::unique_ptr<nifti_image, NiftiDeleter> nim(
-      nifti_image_read(file.c_str(), 1));
+    std::unique_ptr<nifti_image, NiftiDeleter> nim;
+    {
+      // Some of libnifti's messages ("** ERROR: nifti_convert_n1hdr2nim:
+      // bad dim[0]") ignore the debug level: the one line is ours.
+      const SilencedStderr silenced;
+      nim.reset(nifti_image_read(file.c_str(), 1));
+    }
     if (!nim || nim->data == nullptr)
       throw fail("not a readable NIfTI image; expected a labelled NIfTI "
                  "image (.nii or .nii.gz)");
@@ -212,6 +283,7 @@ namespace RestShape
     if (!(std::abs(det) > 0) || !std::isfinite(det))
       throw fail("the voxel-to-millimetre map of the header is singular; "
                  "expected positive voxel sizes");
+    check_geometry(image, file, parameter);
     if (image.label_counts().empty())
       throw fail("the image holds no label (every voxel is 0); expected "
                  "labelled tissue (labels > 0)");

@@ -5,6 +5,8 @@
 #include <restshape/base/input_error.h>
 #include <restshape/postprocess/verification.h>
 
+#include <array>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -46,6 +48,7 @@ namespace RestShape
   ExactDisplacement::ExactDisplacement(const std::string &expressions,
                                        const double       length_unit,
                                        const std::string &parameter)
+    : parameter(parameter)
   {
     // deal.II's FunctionParser prints muparser's messages to std::cerr
     // before it throws; keep them off the terminal (we report one line).
@@ -69,6 +72,42 @@ namespace RestShape
                            "); expected three muparser expressions of x, y, "
                            "z separated by ';'");
       }
+  }
+
+  void
+  ExactDisplacement::check_finite_on(const Triangulation<3> &tria) const
+  {
+    std::vector<Point<3>> points;
+    const auto           &used = tria.get_used_vertices();
+    for (unsigned int v = 0; v < used.size(); ++v)
+      if (used[v])
+        points.push_back(tria.get_vertices()[v]);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        points.push_back(cell->center());
+
+    std::array<double, 4> where = {{0, 0, 0, 0}}; // found?, x, y, z
+    for (const Point<3> &p : points)
+      for (unsigned int c = 0; c < 3 && where[0] == 0; ++c)
+        if (!std::isfinite(function->value(p, c)))
+          where = {{1, p[0], p[1], p[2]}};
+    const auto comm = tria.get_communicator();
+    if (Utilities::MPI::max(where[0], comm) == 0)
+      return;
+    // The place reported is the one of the lowest rank that found one.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first =
+      Utilities::MPI::min(where[0] > 0 ? rank : ~0u, comm);
+    where = Utilities::MPI::broadcast(comm, where, first);
+    std::ostringstream at;
+    at << "(" << where[1] << ", " << where[2] << ", " << where[3] << ") m";
+    throw InputError("",
+                     parameter,
+                     "the expressions give a value that is not a finite "
+                     "number at " +
+                       at.str() +
+                       "; expected an exact solution defined on the whole "
+                       "mesh");
   }
 
   DisplacementErrors

@@ -46,10 +46,23 @@ namespace RestShape
     run();
 
   private:
+    /// The phases of run(), in their fixed order.
+    void
+    run_phases();
+    /// summary.json of a run stopped by @p what (exit codes 2 and 3).
+    void
+    record_failure(const std::string &what);
     void
     make_mesh();
     void
     check_scene() const;
+    /// The labels Boundary conditions/Fixed labels holds (any component).
+    std::set<Label>
+    held_labels() const;
+    /// The pieces of the mesh that only a vertex or an edge joins to the
+    /// held body, for the message of a failed solve ("" if none).
+    std::string
+    unheld_pieces_text() const;
     void
     setup_problems();
     /// ContactProblem::check_placement(), on the target of a rest shape

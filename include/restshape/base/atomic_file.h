@@ -7,6 +7,8 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace RestShape
 {
@@ -33,6 +35,36 @@ namespace RestShape
     const std::function<bool(const std::string &)> &write,
     const std::string                              &parameter,
     const std::string                              &message);
+
+  /**
+   * Files of one result that appear together or not at all (a mesh and its
+   * skull): each is written under a staging name in its own directory
+   * ("<dir>/.staged-<pid>-<name>", same extension), and commit() renames
+   * them all into place once every one was written. Staged files not
+   * committed are removed by the destructor and by an interruption.
+   */
+  class StagedFiles
+  {
+  public:
+    StagedFiles()                    = default;
+    StagedFiles(const StagedFiles &) = delete;
+    StagedFiles &
+    operator=(const StagedFiles &) = delete;
+    ~StagedFiles();
+
+    /// The name to write @p path under until commit().
+    std::string
+    stage(const std::string &path);
+
+    /// Rename every staged file to its final name. Throws InputError
+    /// naming @p parameter of a file that cannot be renamed.
+    void
+    commit(const std::string &parameter);
+
+  private:
+    /// (staging name, final name)
+    std::vector<std::pair<std::string, std::string>> files;
+  };
 
   /**
    * Create @p directory (and parents) if needed and check that files can be

@@ -23,6 +23,9 @@ namespace RestShape
       std::variant<double, long, bool, std::string, dealii::Tensor<1, 3>>;
     void
     set(const std::string &key, const Value &value);
+    /// Whether @p key has a value.
+    bool
+    has(const std::string &key) const;
     void
     write(std::ostream &out) const;
 
@@ -45,6 +48,16 @@ namespace RestShape
     std::string           name;
     dealii::Vector<float> values; // per active cell
   };
+
+  /**
+   * Remove from @p directory the files a run of RestShape writes there
+   * (summary.json, solution-*.vtu and their records, iterations.csv,
+   * rest_shape.msh, ...), and temporary files left by a killed run, so
+   * that the next run's results are never mixed with an earlier run's.
+   * Other files and subdirectories (study/) stay.
+   */
+  void
+  remove_previous_results(const std::string &directory);
 
   class OutputWriter
   {

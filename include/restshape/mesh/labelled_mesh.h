@@ -22,6 +22,9 @@
 
 namespace RestShape
 {
+  struct MeshPieces;
+  struct UnheldPiece;
+
   /**
    * The computational mesh of a scene: the triangulation (distributed when
    * run under MPI: fully distributed for tetrahedra, each rank holding its
@@ -30,7 +33,13 @@ namespace RestShape
   class LabelledMesh
   {
   public:
-    LabelledMesh(const MeshParameters &parameters, const MPI_Comm comm);
+    /// Called with the number of cells of the mesh file (after a split
+    /// into hexahedra) before it is refined: may throw to refuse the run.
+    using SizeCheck = std::function<void(std::size_t cells)>;
+
+    LabelledMesh(const MeshParameters &parameters,
+                 const MPI_Comm        comm,
+                 const SizeCheck      &check_size = {});
 
     dealii::Triangulation<3> &
     triangulation();
@@ -148,9 +157,18 @@ namespace RestShape
                     const double                 coarsen_fraction,
                     const std::function<void()> &before_change = {});
 
+    /// The face-connected pieces of the mesh as read that no cell of
+    /// @p held_labels holds (mesh_pieces.h); none if it is one piece.
+    std::vector<UnheldPiece>
+    unheld_pieces(const std::set<Label> &held_labels) const;
+
     const MeshParameters parameters;
 
   private:
+    /// The mesh as read and its pieces, kept if it has several.
+    std::shared_ptr<const MeshDescription> pieces_mesh;
+    std::shared_ptr<const MeshPieces>      pieces;
+
     /// The triangulation of @p mesh (its cells are not kept: tetrahedra
     /// are described again from the triangulation when refined).
     void

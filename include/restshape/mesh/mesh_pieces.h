@@ -31,6 +31,32 @@ namespace RestShape
   MeshPieces
   face_connected_pieces(const MeshDescription &mesh);
 
+  /// A face-connected piece that nothing holds against rigid motion.
+  struct UnheldPiece
+  {
+    unsigned int     n_cells = 0;
+    std::set<Label>  labels;
+    dealii::Point<3> centre; // of its vertices (mesh units)
+    /// Vertices it shares with held pieces: 0 (it floats), 1 (it pivots
+    /// about a point) or more on a line (it hinges about an edge).
+    unsigned int n_joints = 0;
+
+    /// "a piece of 120 cells (label 3) around (40, 5, 10) floats freely".
+    std::string
+    text(const double unit_to_mm) const;
+  };
+
+  /**
+   * The pieces of @p mesh that no cell of @p held_labels holds, directly or
+   * through at least three non-collinear vertices shared with a held piece
+   * (a piece joined to the rest at one vertex or along an edge can still
+   * rotate about it).
+   */
+  std::vector<UnheldPiece>
+  unheld_pieces(const MeshDescription &mesh,
+                const MeshPieces      &pieces,
+                const std::set<Label> &held_labels);
+
   struct RemovedPieces
   {
     unsigned int n_pieces = 0;

@@ -39,7 +39,14 @@ namespace RestShape
     DisplacementErrors
     errors(const ForwardProblem &problem, const VectorType &u) const;
 
+    /// Throws InputError naming the parameter if the expressions give a
+    /// value that is not a finite number (sqrt(-1), 1/0, log(0)) at a
+    /// vertex or a cell centre of @p tria (collective on its communicator).
+    void
+    check_finite_on(const dealii::Triangulation<3> &tria) const;
+
   private:
+    std::string parameter;
     class SIFunction;
     std::unique_ptr<dealii::Function<3>> function;
   };

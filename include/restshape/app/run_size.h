@@ -1,0 +1,40 @@
+// What a scene's mesh size means for the machine, said before the work.
+#ifndef restshape_app_run_size_h
+#define restshape_app_run_size_h
+
+#include <restshape/base/parameters.h>
+
+#include <cstddef>
+#include <string>
+
+namespace RestShape
+{
+  /// Cells, DoFs and memory of a run on a mesh of @p cells_read cells after
+  /// Mesh/Global refinements, estimated from the element and cell type.
+  struct RunSize
+  {
+    double cells;
+    double dofs;
+    double bytes;
+
+    /// "2.7e+06 cells, about 1.6e+06 DoFs and 7.6 GiB".
+    std::string
+    text() const;
+  };
+
+  RunSize
+  estimate_run_size(const std::size_t cells_read, const Parameters &parameters);
+
+  /**
+   * Throws InputError naming Mesh/Global refinements if the refined mesh
+   * cannot fit the machine's memory; prints the estimate on rank 0 when
+   * the mesh is refined.
+   */
+  void
+  check_run_size(const std::size_t  cells_read,
+                 const Parameters  &parameters,
+                 const std::string &prm_file,
+                 const bool         print);
+} // namespace RestShape
+
+#endif

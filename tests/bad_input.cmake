@@ -1,0 +1,169 @@
+# The bad-input contract (README, "Exit codes"), one test per class of input
+# that once crashed, hung or lied: one line naming the file, the parameter
+# and what was expected, exit 1 (a solver that fails: exit 2 with its
+# summary.json), nothing overwritten. Inputs: tests/data/bad/.
+set(BAD tests/data/bad)
+
+# Non-finite loads and figures.
+restshape_error_test(gravity_overflows 1
+  "Loads/Gravity, Materials/Density: the strain of the weight.*is not a finite number"
+  --set "Loads/Gravity=1e300, 0, 0" prm/column.prm)
+restshape_error_test(density_out_of_range 1
+  "Materials/Density: rho = 1e\\+308 kg/m.3 \\(all labels\\). expected 0 <= rho <= 1e\\+06"
+  --set "Materials/Density=1e308" prm/column.prm)
+restshape_error_test(youngs_modulus_out_of_range 1
+  "Materials/Young.s modulus: E = 1e\\+308 Pa \\(all labels\\). expected 0.001 Pa <= E <= 1e\\+15 Pa"
+  --set "Materials/Young's modulus=1e308" prm/column.prm)
+foreach(expression "sqrt(-1)" "1/x" "log(0)")
+  string(MAKE_C_IDENTIFIER "${expression}" id)
+  restshape_error_test(verification_not_finite_${id} 1
+    "Verification/Exact displacement: the expressions give a value that is not a finite number at"
+    --set "Verification/Exact displacement=${expression}$<SEMICOLON> 0$<SEMICOLON> 0" prm/column.prm)
+endforeach()
+foreach(name target_nan target_1e400)
+  restshape_error_test(rest_shape_${name} 1
+    "rest_shape_${name}.msh: Mesh/File: target_position of node 1 is not a finite point"
+    --set Mesh/File=${BAD}/rest_shape_${name}.msh prm/column.prm)
+endforeach()
+restshape_error_test(rest_shape_mass_ratio_1e300 1
+  "Mesh/File: image_mass_ratio of element 1 is 1e\\+300. expected 0.001 <= ratio <= 1000"
+  --set Mesh/File=${BAD}/rest_shape_mass_ratio_1e300.msh prm/column.prm)
+
+# Inputs that crashed a reader.
+restshape_error_test(vtu_deep_nesting 1
+  "deep_nesting.vtu: Mesh/File: XML elements nested more than 64 deep"
+  --set Mesh/File=${BAD}/deep_nesting.vtu prm/column.prm)
+restshape_error_test(abaqus_empty_node_number 1
+  "abaqus_empty_node_number.inp: Mesh/File: line 2: '' is not a node number"
+  --set Mesh/File=${BAD}/abaqus_empty_node_number.inp prm/column.prm)
+restshape_error_test(include_self 1
+  "include_self.prm: line 1: include .*include_self.prm again \\(an include cycle\\)"
+  ${BAD}/include_self.prm)
+restshape_error_test(include_cycle 1
+  "include_b.prm: line 1: include .*include_a.prm again \\(an include cycle\\)"
+  ${BAD}/include_a.prm)
+restshape_error_test(include_directory 1
+  "include_directory.prm: line 1: include tests/data/bad: a directory. expected a parameter file"
+  ${BAD}/include_directory.prm)
+foreach(name obj_face_zero obj_face_past_end)
+  restshape_error_test(${name} 1
+    "${name}.obj: Contact/Obstacle file: face 1 refers to a vertex that does not exist"
+    --set "Contact/Obstacle file=${BAD}/${name}.obj" prm/block_on_floor.prm)
+endforeach()
+restshape_error_test(gmsh4_node_tag_beyond_int32 1 "Mesh/File|Fixed labels"
+  --set Mesh/File=${BAD}/gmsh4_node_tag_beyond_int32.msh prm/column.prm)
+
+# Declared sizes checked against the file before anything is allocated.
+foreach(name vtk_negative_cells vtk_huge_cells vtk_huge_cell_types vtk_negative_field
+    vtk51_huge_offsets)
+  restshape_error_test(${name} 1 "${name}.vtk: Mesh/File: .* declares -?[0-9]+ items"
+    --set Mesh/File=${BAD}/${name}.vtk prm/column.prm)
+endforeach()
+restshape_error_test(vtu_offset_past_data 1
+  "vtu_offset_past_data.vtu: Mesh/File: data array 'types' has an offset beyond the appended data"
+  --set Mesh/File=${BAD}/vtu_offset_past_data.vtu prm/column.prm)
+# (GENERATE over 1e9 ids: read as a range, all 120 elements join 'body')
+restshape_error_test(abaqus_generate_huge 1
+  "Boundary conditions/Fixed labels: label 2 is not a label of the mesh \\(labels: 1\\)"
+  --set Mesh/File=${BAD}/abaqus_generate_huge.inp prm/column.prm)
+# A line of a million commas: read in one pass (it took more than a minute).
+add_test(NAME error/abaqus_million_commas
+  COMMAND bash -c "mkdir -p $1 && { echo '*Node'; printf '1'; head -c 1000000 /dev/zero | tr '\\\\0' ','; echo; } > $1/commas.inp && $0 $2 $1/run 1 'commas.inp: Mesh/File: line 2' --set Mesh/File=$1/commas.inp prm/column.prm"
+    ${RUN_ERROR} ${OUT}/error_abaqus_million_commas_input $<TARGET_FILE:restshape>
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
+# Pieces nothing holds: refused before the solve (floating); named in a
+# warning (hinged along an edge: it swings until its weight holds it) and
+# in the failure of a solve that stops.
+restshape_error_test(floating_piece 1
+  "Mesh/File, Boundary conditions/Fixed labels: a piece of 120 cells \\(label 3\\) around .* mm floats freely, with no fixed label"
+  --set Mesh/File=${BAD}/floating_piece.msh prm/column.prm)
+add_test(NAME run/hinged_piece_named
+  COMMAND bash -c "$0 prm/column.prm --set Output/Directory=$1 --set Mesh/File=tests/data/bad/hinged_piece.msh > $1.log && grep -E 'Warning: a piece of 120 cells \\(label 3\\) around .* mm hinges about the edge joining it to the held body' $1.log"
+    $<TARGET_FILE:restshape> ${OUT}/run_hinged_piece
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
+# Work without bounds: said and refused before it is done.
+restshape_error_test(refinements_beyond_memory 1
+  "Mesh/Global refinements: 8 uniform refinements of 5319 cells make .* GiB, more than this machine's"
+  --set "Mesh/Global refinements=8" prm/brain.prm)
+
+# Silently accepted nonsense.
+restshape_error_test(vtk_negative_cell_type 1
+  "vtk_negative_cell_type.vtk: Mesh/File: cell 0 has VTK type -10, not a linear tetrahedron"
+  --set Mesh/File=${BAD}/vtk_negative_cell_type.vtk prm/column.prm)
+restshape_error_test(vtu_connectivity_fraction 1
+  "vtu_connectivity_fraction.vtu: Mesh/File: data array 'connectivity' holds 0.5, not a whole number"
+  --set Mesh/File=${BAD}/vtu_connectivity_fraction.vtu prm/column.prm)
+restshape_error_test(vtu_label_fraction 1
+  "vtu_label_fraction.vtu: Mesh/File: data array 'label' holds 1.5, not a whole number"
+  --set Mesh/File=${BAD}/vtu_label_fraction.vtu prm/column.prm)
+restshape_error_test(gmsh_elements_beyond_count 1
+  "gmsh_elements_beyond_count.msh: Mesh/File: .Elements declares 110 elements but its section has 120 lines"
+  --set Mesh/File=${BAD}/gmsh_elements_beyond_count.msh prm/column.prm)
+# Control bytes of a file name reach the terminal escaped.
+add_test(NAME error/control_bytes_escaped
+  COMMAND bash -c "$0 $2 $1 1 'a.x01.x1b.31mb.msh: Mesh/File: no such file' --set \"Mesh/File=$(printf 'a\\001\\033[31mb.msh')\" prm/column.prm"
+    ${RUN_ERROR} ${OUT}/error_control_bytes_escaped $<TARGET_FILE:restshape>
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+# A number below the smallest normal double is a number.
+add_test(NAME run/subnormal_gravity_component
+  COMMAND bash -c "$0 prm/column.prm --set Output/Directory=$1 --set 'Loads/Gravity=1e-308, 0, -9.81' --set 'Solver/Check stability=false' > /dev/null && grep -q '\"converged\": true' $1/summary.json"
+    $<TARGET_FILE:restshape> ${OUT}/run_subnormal_gravity
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
+# The same contract on 2 ranks.
+function(restshape_mpi_error_test name code regex)
+  add_test(NAME mpi/error_${name}
+    COMMAND ${CMAKE_COMMAND} -E env MPI_RANKS=2
+      ${RUN_ERROR} $<TARGET_FILE:restshape> ${OUT}/mpi_error_${name} ${code} ${regex} ${ARGN}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(mpi/error_${name} PROPERTIES PROCESSORS 2)
+endfunction()
+restshape_mpi_error_test(gravity_overflows 1 "Loads/Gravity, Materials/Density: the strain"
+  --set "Loads/Gravity=1e300, 0, 0" prm/column.prm)
+restshape_mpi_error_test(floating_piece 1 "floats freely"
+  --set Mesh/File=${BAD}/floating_piece.msh prm/column.prm)
+restshape_mpi_error_test(vtk_huge_cells 1 "vtk_huge_cells.vtk: Mesh/File: CELLS declares"
+  --set Mesh/File=${BAD}/vtk_huge_cells.vtk prm/column.prm)
+
+# The mesher.
+restshape_mesher_error_test(skull_gap_too_deep
+  "--skull-gap: a skull 20 mm inside the labelled region's surface encloses nothing of it"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --skull-out @OUT@/skull.off --skull-gap -20)
+restshape_mesher_error_test(skull_gap_too_wide
+  "--skull-gap: a gap of 1e\\+06 mm needs a distance grid of"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --skull-out @OUT@/skull.off --skull-gap 1e6)
+restshape_mesher_error_test(skull_bad_extension
+  "skull.ply: --skull-out: unsupported extension '.ply'. expected a surface file name"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --skull-out @OUT@/skull.ply --skull-gap 1)
+restshape_mesher_error_test(out_is_a_directory
+  "--out: is a directory. expected a gmsh file name"
+  --image tests/data/sphere_labels.nii --out @OUT@)
+restshape_mesher_error_test(cell_size_below_voxel
+  "sphere_labels.nii: --cell-size: 0.01 mm is far below the voxel size \\(2 mm\\). expected at least 0.5 mm"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --cell-size 0.01)
+restshape_mesher_error_test(facet_distance_below_voxel
+  "--facet-distance: 0.001 mm is far below the voxel size"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --facet-distance 0.001)
+restshape_mesher_error_test(skull_facet_size_below_voxel
+  "--skull-facet-size: 0.001 mm is far below the voxel size"
+  --image tests/data/sphere_labels.nii --out @OUT@/mesh.msh --skull-out @OUT@/skull.off
+  --skull-gap 1 --skull-facet-size 0.001)
+foreach(name voxel_1e-30 voxel_1e30)
+  restshape_mesher_error_test(${name} "${name}.nii: --image: a voxel size of 1e.30 mm in the header"
+    --image ${BAD}/${name}.nii --out @OUT@/mesh.msh)
+endforeach()
+restshape_mesher_error_test(nifti_dim0_zero "dim0_zero.nii: --image: the image has dimensions"
+  --image ${BAD}/dim0_zero.nii --out @OUT@/mesh.msh)
+restshape_mesher_error_test(sform_nan_offset
+  "sform_nan_offset.nii: --image: the header puts the image's origin at nan mm"
+  --image ${BAD}/sform_nan_offset.nii --out @OUT@/mesh.msh)
+restshape_mesher_error_test(qform_huge_offset
+  "qform_huge_offset.nii: --image: the header puts the image's origin at 1e\\+30 mm"
+  --image ${BAD}/qform_huge_offset.nii --out @OUT@/mesh.msh)
+
+# Interrupted runs leave the old result or the new one, never a mix.
+add_test(NAME run/interrupted_runs
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_interrupts.sh $<TARGET_FILE:restshape> ${OUT}/interrupted_runs
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
