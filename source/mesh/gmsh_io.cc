@@ -3,10 +3,10 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/label_values.h>
+#include <restshape/mesh/child_reader.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/gmsh_sections.h>
 #include <restshape/mesh/mesh_transforms.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -259,52 +259,7 @@ namespace RestShape
   namespace
   {
     MeshDescription
-    read_with_gmsh(const std::string &file, const double length_unit);
-
-    /**
-     * Read @p file with the gmsh library once in a child process: gmsh's
-     * reader crashes on some malformed files (a segmentation fault in
-     * ConvertOldPartitioningToNewOne for gmsh 2 elements with bad partition
-     * tags, found by fuzzing), which must be an input error, not the end of
-     * the run. If the child dies of a signal, InputError; otherwise the
-     * caller reads the file itself (and reports its errors).
-     */
-    void
-    check_that_gmsh_survives(const std::string &file)
-    {
-      const pid_t pid = fork();
-      if (pid == 0)
-        {
-          // An error the reader throws is reported by the parent, which
-          // reads the file again; only a crash ends the child otherwise
-          // (a signal, or a sanitizer's non-zero exit).
-          try
-            {
-              read_with_gmsh(file, 1.);
-            }
-          catch (...)
-            {}
-          _exit(0);
-        }
-      if (pid < 0)
-        return; // no child: read in this process only
-      int status = 0;
-      while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-        ;
-      if (WIFSIGNALED(status))
-        throw InputError(file,
-                         file_parameter,
-                         "gmsh's reader crashed on this file (signal " +
-                           std::to_string(WTERMSIG(status)) + ", " +
-                           strsignal(WTERMSIG(status)) +
-                           "); expected a well-formed gmsh .msh mesh");
-      if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
-        throw InputError(file,
-                         file_parameter,
-                         "gmsh's reader crashed on this file (exit code " +
-                           std::to_string(WEXITSTATUS(status)) +
-                           "); expected a well-formed gmsh .msh mesh");
-    }
+    read_gmsh_data(const std::string &file, const double length_unit);
   } // namespace
 
   MeshDescription
@@ -321,14 +276,23 @@ namespace RestShape
                        file_parameter,
                        "not a readable file; expected a gmsh .msh mesh");
     check_gmsh_section_counts(file, file_parameter);
-    check_that_gmsh_survives(file);
-    return read_with_gmsh(file, length_unit);
+    // gmsh's reader crashes or corrupts its heap on some malformed files
+    // (gmsh 2 elements with bad partition tags, found by fuzzing): it runs
+    // in a child process, and a crash is an input error.
+    MeshDescription mesh =
+      read_in_child_process([&]() { return read_gmsh_data(file, length_unit); },
+                            file,
+                            file_parameter,
+                            "a well-formed gmsh .msh mesh");
+    mesh.names = read_gmsh_label_names(file);
+    return finish_read_mesh(std::move(mesh), file, file_parameter);
   }
 
   namespace
   {
+    /// Nodes, cells and rest-shape data as gmsh reads them.
     MeshDescription
-    read_with_gmsh(const std::string &file, const double length_unit)
+    read_gmsh_data(const std::string &file, const double length_unit)
     {
       // The gmsh library reads every .msh version (ASCII or binary) and, unlike
       // GridIn (which silently reorders the vertices of inverted tetrahedra),
@@ -441,9 +405,7 @@ namespace RestShape
                              "); expected a gmsh .msh file with 3d cells");
         }
       gmsh::finalize();
-
-      result.names = read_gmsh_label_names(file);
-      return finish_read_mesh(std::move(result), file, file_parameter);
+      return result;
     }
   } // namespace
 

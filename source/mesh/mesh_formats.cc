@@ -129,10 +129,13 @@ namespace RestShape
       long
       integer(const std::string &what)
       {
-        const double x = number(what);
-        if (x != std::floor(x))
-          fail("'" + std::to_string(x) + "' in " + what +
-               " is not a whole number");
+        // Beyond 2^62 no count or index of a mesh is meant (and the
+        // conversion to long would be undefined).
+        constexpr double largest = 4.6e18;
+        const double     x       = number(what);
+        if (x != std::floor(x) || std::abs(x) > largest)
+          fail("'" + number_text(x) + "' in " + what +
+               " is not a whole number of at most " + number_text(largest));
         return static_cast<long>(x);
       }
 
