@@ -29,7 +29,9 @@ fi
 
 printf '%-8s %12s %10s %9s %8s %8s  %s\n' target executions exec/s coverage features corpus findings
 n_failed=0
-cd "$source_dir"
+# The sanitizers' reports of crashing children (".PID" files) stay in
+# the build directory.
+cd "$build"
 for t in "${targets[@]}"; do
   corpus=$build/corpus/$t
   findings=$build/findings/$t
@@ -41,7 +43,7 @@ for t in "${targets[@]}"; do
   log=$build/fuzz_$t.log
   # -fork: a crash or hang is saved and the campaign goes on.
   ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1 \
-    "$build/tests/fuzz/fuzz_$t" "$corpus" "tests/fuzz/regression/$t" \
+    "$build/tests/fuzz/fuzz_$t" "$corpus" "$source_dir/tests/fuzz/regression/$t" \
     -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 -malloc_limit_mb=4096 \
     -print_final_stats=1 -artifact_prefix="$findings/" -close_fd_mask=3 \
     -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 -fork=1 >"$log" 2>&1

@@ -2,6 +2,7 @@
 #include <nifti2_io.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/machine_memory.h>
 #include <restshape/mesher/labelled_image.h>
 #include <unistd.h>
 
@@ -149,6 +150,30 @@ namespace RestShape
       const int saved;
     };
 
+    /// The bytes of voxels @p header declares, against the file's size
+    /// (uncompressed) or half the machine's memory (.gz).
+    void
+    check_declared_size(const nifti_image &header,
+                        const std::string &file,
+                        const std::string &parameter)
+    {
+      const double    declared = double(header.nvox) * header.nbyper;
+      std::error_code ec;
+      const double    size = std::filesystem::file_size(file, ec);
+      const bool      compressed =
+        file.size() > 3 && file.compare(file.size() - 3, 3, ".gz") == 0;
+      const double limit =
+        compressed ? 0.5 * physical_memory_bytes() : (ec ? 0. : size);
+      if (declared > limit && limit > 0)
+        throw InputError(file,
+                         parameter,
+                         "the header declares " + number_text(header.nvox) +
+                           " voxels (" + number_text(declared) +
+                           " bytes), more than the file " +
+                           (compressed ? "could hold in memory" : "holds") +
+                           "; expected a header that matches its image");
+    }
+
     /// Voxel sizes and origin within the bounds above.
     void
     check_geometry(const LabelledImage &image,
@@ -193,6 +218,11 @@ namespace RestShape
       // Some of libnifti's messages ("** ERROR: nifti_convert_n1hdr2nim:
       // bad dim[0]") ignore the debug level: the one line is ours.
       const SilencedStderr silenced;
+      // The header first: the voxels it declares must fit the file (or,
+      // compressed, half the machine's memory) before they are allocated.
+      nim.reset(nifti_image_read(file.c_str(), 0));
+      if (nim)
+        check_declared_size(*nim, file, parameter);
       nim.reset(nifti_image_read(file.c_str(), 1));
     }
     if (!nim || nim->data == nullptr)
