@@ -142,6 +142,24 @@ namespace RestShape
     }
   } // namespace
 
+  namespace
+  {
+    /// @p text with @p section on the line after @p after, or before
+    /// @p otherwise if @p text has no @p after.
+    std::string
+    insert_section(std::string        text,
+                   const std::string &section,
+                   const std::string &after,
+                   const std::string &otherwise)
+    {
+      const auto at = text.find(after);
+      text.insert(at == std::string::npos ? text.find(otherwise) :
+                                            text.find('\n', at) + 1,
+                  section);
+      return text;
+    }
+  } // namespace
+
   std::string
   add_cell_data(const std::string &vtu, const std::vector<VtuCellArray> &arrays)
   {
@@ -160,12 +178,7 @@ namespace RestShape
     for (const VtuCellArray &array : arrays)
       section += data_array(array, repeat, encoding);
     section += "  </CellData>\n";
-    std::string result = vtu;
-    auto        at     = result.find("</PointData>");
-    at                 = at == std::string::npos ? result.find("</Piece>") :
-                                                   result.find('\n', at) + 1;
-    result.insert(at, section);
-    return result;
+    return insert_section(vtu, section, "</PointData>", "</Piece>");
   }
 
   std::string
@@ -179,11 +192,6 @@ namespace RestShape
       section += "      <PDataArray type=\"" + type_name(array) + "\" Name=\"" +
                  array.name + "\"/>\n";
     section += "    </PCellData>\n";
-    std::string result = pvtu;
-    auto        at     = result.find("</PPointData>");
-    at                 = at == std::string::npos ? result.find("<PPoints>") :
-                                                   result.find('\n', at) + 1;
-    result.insert(at, section);
-    return result;
+    return insert_section(pvtu, section, "</PPointData>", "<PPoints>");
   }
 } // namespace RestShape
