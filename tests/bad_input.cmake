@@ -167,3 +167,8 @@ restshape_mesher_error_test(qform_huge_offset
 add_test(NAME run/interrupted_runs
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_interrupts.sh $<TARGET_FILE:restshape> ${OUT}/interrupted_runs
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
+# Runs started side by side all initialise MPI.
+add_test(NAME run/concurrent_starts
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_concurrent_starts.sh $<TARGET_FILE:restshape> ${OUT}/concurrent_starts
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})

@@ -16,6 +16,8 @@ rm -rf "$out"
 "$exe" --study 'Discretization/Polynomial degree=1,2' \
   --study 'Mesh/Global refinements=0,1' --set "Output/Directory=$out" \
   prm/column_inverse.prm | tee "$out.log"
+# A run that failed: its screen output.
+grep -o 'FAILED .*; see [^)]*screen.log' "$out.log" | sed 's/.*; see //' | xargs -r tail -n 30
 csv=$out/study/study.csv
 [ -f "$out/study/study.txt" ] && [ -f "$out/study/study_error_vs_time.svg" ] ||
   { echo "FAIL: no study.txt or plot"; exit 1; }

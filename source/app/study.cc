@@ -228,7 +228,8 @@ namespace RestShape
       std::ostringstream text;
       text << std::setprecision(3);
       if (run.exit_code != 0)
-        text << "FAILED (exit code " << run.exit_code << ", see " << out
+        text << "FAILED (exit code " << run.exit_code << ": "
+             << last_line(out + "/screen.log") << "; see " << out
              << "/screen.log), ";
       else
         text << (run.summary.get<bool>("converged", false) ? "converged, " :

@@ -22,8 +22,15 @@ namespace RestShape
       const char *name;
       const char *value;
     };
-    constexpr Setting singleton_settings[] =
-      {{"OMPI_MCA_ess_singleton_isolated", "1"}, {"OMPI_MCA_pml", "ob1"}};
+    /// Isolated singletons of Open MPI 4 all share one session directory
+    /// (/tmp/ompi.HOST.UID/jf.0/1): a run that ends removes it while another
+    /// one starts, whose MPI_Init then fails ("A call to mkdir was unable to
+    /// create the desired directory", exit 1; 5 of 480 starts of 8 at a
+    /// time). A singleton needs no session directory, so none is made.
+    constexpr Setting singleton_settings[] = {
+      {"OMPI_MCA_ess_singleton_isolated", "1"},
+      {"OMPI_MCA_pml", "ob1"},
+      {"OMPI_MCA_orte_create_session_dirs", "0"}};
   } // namespace
 
   bool
