@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <restshape/base/child_process.h>
 #include <restshape/base/input_error.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/contact/off_faces.h>
@@ -145,6 +146,68 @@ namespace RestShape
       if (mesh.number_of_faces() == 0)
         fail("cannot be read as a polygon surface (it has no face)");
     }
+
+    /// Read, triangulate and check the closed surface in @p file.
+    void
+    read_closed_surface(const std::string &file, Mesh &mesh)
+    {
+      read_surface(file, mesh);
+      if (!CGAL::is_triangle_mesh(mesh))
+        PMP::triangulate_faces(mesh);
+      if (!CGAL::is_closed(mesh))
+        throw InputError(
+          file,
+          parameter,
+          "the surface is open (it has border edges); expected a closed "
+          "surface");
+      if (PMP::does_self_intersect(mesh))
+        throw InputError(file, parameter, "the surface intersects itself");
+      if (!PMP::is_outward_oriented(mesh))
+        throw InputError(
+          file,
+          parameter,
+          "the surface is oriented inward (flipped normals); expected "
+          "normals pointing out of the enclosed region");
+    }
+
+    /// The triangles of @p mesh: its points, then its vertex triples.
+    std::string
+    triangle_soup(Mesh &mesh)
+    {
+      mesh.collect_garbage();
+      ByteWriter out;
+      out.put<std::uint64_t>(mesh.number_of_vertices());
+      for (const auto v : mesh.vertices())
+        for (unsigned int d = 0; d < 3; ++d)
+          out.put<double>(mesh.point(v)[d]);
+      out.put<std::uint64_t>(mesh.number_of_faces());
+      for (const auto f : mesh.faces())
+        for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          out.put<std::uint64_t>(v);
+      return out.str();
+    }
+
+    /// The mesh of a triangle soup made by triangle_soup().
+    void
+    mesh_of_triangle_soup(const std::string &bytes, Mesh &mesh)
+    {
+      ByteReader          in(bytes);
+      std::vector<CPoint> points(in.checked_count(24));
+      for (CPoint &p : points)
+        {
+          const double x = in.get<double>(), y = in.get<double>();
+          p = CPoint(x, y, in.get<double>());
+        }
+      std::vector<std::array<std::size_t, 3>> triangles(in.checked_count(24));
+      for (auto &t : triangles)
+        for (std::size_t &v : t)
+          {
+            v = in.get<std::uint64_t>();
+            if (v >= points.size())
+              throw std::runtime_error("a vertex index out of range");
+          }
+      PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+    }
   } // namespace
 
   Obstacle::Obstacle(const std::string &file,
@@ -168,23 +231,32 @@ namespace RestShape
                        "unsupported format '" + extension +
                          "'; expected .stl, .off or .obj");
 
+    // CGAL's readers and face triangulation run in a child process: on
+    // some malformed files they reach undefined behaviour (found by
+    // fuzzing); only checked triangles come back.
+    const std::string expected = "a closed triangulated surface";
+    const std::string soup     = run_in_child_process(
+      [&file]() {
+        Mesh surface;
+        read_closed_surface(file, surface);
+        return triangle_soup(surface);
+      },
+      file,
+      parameter,
+      expected);
     Mesh &mesh = data->mesh;
-    read_surface(file, mesh);
-    if (!CGAL::is_triangle_mesh(mesh))
-      PMP::triangulate_faces(mesh);
-    if (!CGAL::is_closed(mesh))
-      throw InputError(
-        file,
-        parameter,
-        "the surface is open (it has border edges); expected a closed surface");
-    if (PMP::does_self_intersect(mesh))
-      throw InputError(file, parameter, "the surface intersects itself");
-    if (!PMP::is_outward_oriented(mesh))
-      throw InputError(
-        file,
-        parameter,
-        "the surface is oriented inward (flipped normals); expected "
-        "normals pointing out of the enclosed region");
+    try
+      {
+        mesh_of_triangle_soup(soup, mesh);
+      }
+    catch (const std::runtime_error &)
+      {
+        throw InputError(file,
+                         parameter,
+                         "the reader crashed on this file (its result was "
+                         "cut short); expected " +
+                           expected);
+      }
     for (const auto v : mesh.vertices())
       {
         const CPoint &p = mesh.point(v);

@@ -1,6 +1,6 @@
-// Running a third-party mesh reader in a child process: a reader that
-// crashes or corrupts its heap on a malformed file (gmsh does, on some)
-// takes only the child with it.
+// Reading a mesh with a third-party reader in a child process (see
+// base/child_process.h): a reader that crashes or corrupts its heap on a
+// malformed file (gmsh does, on some) takes only the child with it.
 #ifndef restshape_mesh_child_reader_h
 #define restshape_mesh_child_reader_h
 
