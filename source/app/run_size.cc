@@ -63,23 +63,17 @@ namespace RestShape
     const unsigned int refinements = parameters.mesh.global_refinements;
     if (refinements == 0)
       return;
-    const RunSize      size   = estimate_run_size(cells_read, parameters);
-    const double       memory = physical_memory_bytes();
+    const RunSize      size = estimate_run_size(cells_read, parameters);
     std::ostringstream what;
     what << refinements << " uniform refinement" << (refinements > 1 ? "s" : "")
          << " of " << cells_read << " cells make " << size.text();
-    if (memory > 0 && size.bytes > usable_share * memory)
-      {
-        std::ostringstream machine;
-        machine.precision(2);
-        machine << memory / bytes_per_gibibyte;
-        throw InputError(prm_file,
-                         "Mesh/Global refinements",
-                         what.str() + ", more than this machine's " +
-                           machine.str() +
-                           " GiB; expected fewer refinements (or a machine "
-                           "with more memory)");
-      }
+    if (exceeds_machine_memory(size.bytes, usable_share))
+      throw InputError(prm_file,
+                       "Mesh/Global refinements",
+                       what.str() + ", more than this machine's " +
+                         gibibytes_text(physical_memory_bytes()) +
+                         "; expected fewer refinements (or a machine "
+                         "with more memory)");
     if (print)
       std::cout << "Mesh/Global refinements: " << what.str() << std::endl;
   }

@@ -309,17 +309,16 @@ namespace
       volume += count * h[0] * h[1] * h[2];
     const double tetrahedra =
       volume / (volume_per_tetrahedron * std::pow(s.options.cell_size, 3));
-    const double bytes  = tetrahedra * bytes_per_tetrahedron;
-    const double memory = physical_memory_bytes();
-    if (memory > 0 && bytes > usable_share * memory)
+    const double bytes = tetrahedra * bytes_per_tetrahedron;
+    if (exceeds_machine_memory(bytes, usable_share))
       throw InputError(s.image_file,
                        "--cell-size",
                        number_text(s.options.cell_size) + " mm makes about " +
                          number_text(tetrahedra) + " tetrahedra (" +
-                         number_text(bytes / bytes_per_gibibyte) +
-                         " GiB), more than this machine's " +
-                         number_text(memory / bytes_per_gibibyte) +
-                         " GiB; expected a larger cell size");
+                         gibibytes_text(bytes) +
+                         "), more than this machine's " +
+                         gibibytes_text(physical_memory_bytes()) +
+                         "; expected a larger cell size");
   }
 
   /// --close-sulci: the closed image (moved from @p image unless the

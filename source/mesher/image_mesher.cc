@@ -235,15 +235,14 @@ namespace RestShape
     {
       const double voxels = n[0] * n[1] * n[2];
       const double bytes  = voxels * skull_grid_bytes_per_voxel;
-      const double memory = physical_memory_bytes();
-      if (memory > 0 && bytes > skull_grid_memory_share * memory)
+      if (exceeds_machine_memory(bytes, skull_grid_memory_share))
         throw InputError("",
                          "--skull-gap",
                          "a gap of " + number_text(gap) +
                            " mm needs a distance grid of " +
                            number_text(voxels) + " voxels (" +
-                           number_text(bytes / bytes_per_gibibyte) +
-                           " GiB), more than this machine can hold; "
+                           gibibytes_text(bytes) +
+                           "), more than this machine can hold; "
                            "expected a gap of a few mm");
     }
 
