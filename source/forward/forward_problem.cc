@@ -14,7 +14,6 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <restshape/base/input_error.h>
-#include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 
 #include <cmath>
@@ -80,7 +79,7 @@ namespace RestShape
   }
 
   void
-  ForwardProblem::set_contact(ContactProblem *c)
+  ForwardProblem::set_contact(ActiveSetConstraints *c)
   {
     contact = c;
   }

@@ -5,7 +5,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/filtered_iterator.h>
 
-#include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 
 namespace RestShape

@@ -2,7 +2,6 @@
 // tolerances), inside load stepping.
 
 #include <restshape/base/input_error.h>
-#include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 
 #include <algorithm>
@@ -568,14 +567,14 @@ namespace RestShape
   SolveStatistics
   ForwardProblem::solve(const LoadState &target_load, const VectorType &rest)
   {
-    SolveStatistics       stats;
-    const LoadState       start_load  = current_load;
-    const VectorType      w_start     = w;
-    VectorType            d_converged = d;
-    LoadSteps             steps{0, 1. / parameters.solver.initial_load_steps};
-    unsigned int          halvings = 0;
-    FailedAttempts        failed;
-    ContactProblem::State contact_converged;
+    SolveStatistics  stats;
+    const LoadState  start_load  = current_load;
+    const VectorType w_start     = w;
+    VectorType       d_converged = d;
+    LoadSteps        steps{0, 1. / parameters.solver.initial_load_steps};
+    unsigned int     halvings = 0;
+    FailedAttempts   failed;
+    ActiveSetConstraints::State contact_converged;
     if (contact != nullptr)
       contact_converged = contact->state();
 

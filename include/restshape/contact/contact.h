@@ -7,9 +7,9 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <restshape/base/parameters.h>
-#include <restshape/contact/contact_conditions.h>
 #include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
+#include <restshape/forward/active_set_constraints.h>
 #include <restshape/forward/forward_problem.h>
 
 #include <array>
@@ -45,7 +45,7 @@ namespace RestShape
    * out again; a node that starts a solve on the wrong side is free until
    * then (a rest shape may lie beyond the skull).
    */
-  class ContactProblem
+  class ContactProblem : public ActiveSetConstraints
   {
   public:
     ContactProblem(const ContactParameters &parameters,
@@ -96,7 +96,7 @@ namespace RestShape
 
     /// A new solve starts from displacement @p d (ghosted).
     void
-    begin_solve(const VectorType &d);
+    begin_solve(const VectorType &d) override;
 
     /// The one-sided rule of the inverse iteration on (the solves of the
     /// fixed point) or off (forward simulations: the default).
@@ -113,14 +113,13 @@ namespace RestShape
 
     /// The active and eligible flags of every candidate: saved with an
     /// equilibrium, restored with it when a step is taken back.
-    using State = std::vector<std::pair<bool, bool>>;
     State
-    state() const;
+    state() const override;
     void
-    set_state(const State &state);
+    set_state(const State &state) override;
     /// Forget the active set (a new problem starts).
     void
-    reset();
+    reset() override;
 
     /**
      * Gaps at @p d; eligibility; new active set from the contact forces in
@@ -130,7 +129,7 @@ namespace RestShape
     bool
     update_active_set(const VectorType &d,
                       const VectorType &raw_residual,
-                      const bool        first_iteration);
+                      const bool        first_iteration) override;
 
     /**
      * The largest step length alpha <= 1 along the Newton update @p delta
@@ -140,12 +139,13 @@ namespace RestShape
      * obstacle; the nodes that reach it are activated at the next iterate.
      */
     double
-    max_step(const VectorType &delta) const;
+    max_step(const VectorType &delta) const override;
 
     /// Add the constraints of the active nodes (not touching @p base's).
     void
-    add_constraints(dealii::AffineConstraints<double>       &constraints,
-                    const dealii::AffineConstraints<double> &base) const;
+    add_constraints(
+      dealii::AffineConstraints<double>       &constraints,
+      const dealii::AffineConstraints<double> &base) const override;
 
     /**
      * Called when Newton has converged with releases frozen (cycling, or
@@ -159,12 +159,12 @@ namespace RestShape
      * they pull beyond its tolerance.
      */
     bool
-    thaw_if_adhesive(const VectorType &raw_residual);
+    thaw_if_adhesive(const VectorType &raw_residual) override;
 
     /// No eligible node beyond the obstacle and every active node on it
     /// (within g_tol) at the state of the last update.
     bool
-    is_satisfied() const;
+    is_satisfied() const override;
 
     /**
      * The contact conditions at the displacement @p d (ghosted) with the
@@ -176,7 +176,7 @@ namespace RestShape
     ContactConditions
     check_conditions(const VectorType &d,
                      const VectorType &raw_residual,
-                     const double      force_tolerance) const;
+                     const double      force_tolerance) const override;
 
     /**
      * After a Newton solve converged with the conditions @p violated (the
@@ -192,7 +192,7 @@ namespace RestShape
     bool
     enforce_conditions(const ContactConditions &violated,
                        const VectorType        &raw_residual,
-                       const double             force_tolerance);
+                       const double             force_tolerance) override;
 
     /**
      * Whether the rounds of enforce_conditions() cycle ("" while they do
@@ -204,7 +204,7 @@ namespace RestShape
      * only once Newton has converged.)
      */
     const std::string &
-    cycle_text() const
+    cycle_text() const override
     {
       return cycle;
     }
@@ -216,11 +216,11 @@ namespace RestShape
     /// message of a Newton solve whose residual met the tolerance when it
     /// ran out of iterations.
     std::string
-    unsettled_text() const;
+    unsettled_text() const override;
 
     /// ", contact N active (+a new, -r released)" for the Newton progress line.
     std::string
-    progress_text() const;
+    progress_text() const override;
 
     // --- results at the state of the last update ------------------------
     unsigned int

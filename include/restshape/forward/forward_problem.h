@@ -17,7 +17,8 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <restshape/base/parameters.h>
-#include <restshape/contact/contact_conditions.h>
+#include <restshape/forward/active_set_constraints.h>
+#include <restshape/forward/contact_conditions.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/material.h>
@@ -33,7 +34,6 @@
 
 namespace RestShape
 {
-  class ContactProblem;
 
   /// A mesh node: its three displacement DoFs and its mesh position (m).
   struct Node
@@ -132,7 +132,7 @@ namespace RestShape
     /// Optional contact (owned by the caller; nullptr: none). Its setup()
     /// must follow setup().
     void
-    set_contact(ContactProblem *contact);
+    set_contact(ActiveSetConstraints *contact);
 
     /**
      * Move the equilibrium from the current state (an equilibrium of the
@@ -346,7 +346,7 @@ namespace RestShape
     evaluate(const bool with_tangent);
 
     /// The contact conditions checked at the end of the last Newton solve
-    /// with contact (ContactProblem::check_conditions()).
+    /// with contact (ActiveSetConstraints::check_conditions()).
     const ContactConditions &
     contact_conditions() const
     {
@@ -668,7 +668,7 @@ namespace RestShape
     bool                         symmetric_tangent = true;
 
     std::unique_ptr<LinearSolver> linear_solver;
-    ContactProblem               *contact = nullptr;
+    ActiveSetConstraints         *contact = nullptr;
   };
 } // namespace RestShape
 

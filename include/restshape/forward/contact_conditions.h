@@ -1,6 +1,6 @@
 // The contact conditions of a state, as checked against the obstacle.
-#ifndef restshape_contact_contact_conditions_h
-#define restshape_contact_contact_conditions_h
+#ifndef restshape_forward_contact_conditions_h
+#define restshape_forward_contact_conditions_h
 
 #include <deal.II/base/point.h>
 
@@ -14,7 +14,7 @@ namespace RestShape
    * node on the allowed side (penetration <= the gap tolerance), every
    * active node on the surface (|gap| <= the gap tolerance) and pushing
    * (its contact force, or each held plane's, >= -the force tolerance);
-   * inactive nodes carry no force by construction. ContactProblem::
+   * inactive nodes carry no force by construction. ActiveSetConstraints::
    * check_conditions().
    */
   struct ContactConditions

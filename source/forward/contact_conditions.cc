@@ -1,0 +1,50 @@
+// The contact conditions of a state, in words.
+#include <restshape/forward/contact_conditions.h>
+
+#include <cstdio>
+
+namespace RestShape
+{
+  namespace
+  {
+    using Violation = ContactConditions::Violation;
+
+    std::string
+    describe(const Violation &v,
+             const char      *what,
+             const double     scale,
+             const char      *unit)
+    {
+      if (v.nodes == 0)
+        return "";
+      char buffer[256];
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "%u node%s %s by up to %.3g %s (the worst at (%.2f, "
+                    "%.2f, %.2f) mm)",
+                    v.nodes,
+                    v.nodes == 1 ? "" : "s",
+                    what,
+                    v.worst * scale,
+                    unit,
+                    1e3 * v.where[0],
+                    1e3 * v.where[1],
+                    1e3 * v.where[2]);
+      return buffer;
+    }
+  } // namespace
+
+  std::string
+  ContactConditions::text() const
+  {
+    std::string result;
+    for (const std::string &part :
+         {describe(through, "through the obstacle", 1e3, "mm"),
+          describe(off, "active but off the obstacle", 1e3, "mm"),
+          describe(pulling, "pulling on the obstacle", 1, "Pa")})
+      if (!part.empty())
+        result += (result.empty() ? "" : "; ") + part;
+    return result.empty() ? "the contact conditions hold" : result;
+  }
+
+} // namespace RestShape
