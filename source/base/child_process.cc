@@ -8,6 +8,11 @@
 #include <csignal>
 #include <cstdlib>
 
+// In a sanitizer's build (the fuzz targets), the sanitizer's death
+// callback; absent (null) otherwise.
+extern "C" void
+__sanitizer_set_death_callback(void (*callback)()) __attribute__((weak));
+
 namespace RestShape
 {
   namespace
@@ -58,6 +63,10 @@ namespace RestShape
       // fuzzer's would report the parent's input as a crash).
       for (const int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
         std::signal(sig, SIG_DFL);
+      // Nor does a sanitizer's report here run the fuzzer's death callback,
+      // which would save the parent's input as a crash of its own.
+      if (__sanitizer_set_death_callback != nullptr)
+        __sanitizer_set_death_callback(nullptr);
       // Its own messages (glibc's "double free or corruption") stay off
       // the terminal: the parent reports the crash in one line.
       ::setenv("LIBC_FATAL_STDERR_", "1", 1);
