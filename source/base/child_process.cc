@@ -90,50 +90,74 @@ namespace RestShape
       ::close(fd);
       _exit(0);
     }
+
+    /// The bytes @p work returns, computed in a forked child (here without
+    /// fork()); @p crashed makes the error of a child that died.
+    std::string
+    child_bytes(const std::function<std::string()>                   &work,
+                const std::string                                    &file,
+                const std::string                                    &parameter,
+                const std::function<InputError(const std::string &)> &crashed)
+    {
+      int fds[2];
+      if (::pipe(fds) != 0)
+        return work();
+      const pid_t pid = fork();
+      if (pid < 0)
+        {
+          ::close(fds[0]);
+          ::close(fds[1]);
+          return work();
+        }
+      if (pid == 0)
+        {
+          ::close(fds[0]);
+          run_child(work, fds[1]);
+        }
+      ::close(fds[1]);
+      std::string bytes = receive(fds[0]);
+      ::close(fds[0]);
+      int status = 0;
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+      if (WIFSIGNALED(status))
+        throw crashed("signal " + std::to_string(WTERMSIG(status)) + ", " +
+                      strsignal(WTERMSIG(status)));
+      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
+        throw crashed("exit code " + std::to_string(WEXITSTATUS(status)));
+      if (bytes[0] == error_tag)
+        throw InputError(file, parameter, bytes.substr(1));
+      if (bytes[0] != result_tag)
+        throw crashed("its result was cut short");
+      return bytes.substr(1);
+    }
   } // namespace
 
-  std::string
-  run_in_child_process(const std::function<std::string()> &work,
-                       const std::string                  &file,
-                       const std::string                  &parameter,
-                       const std::string                  &expected)
+  void
+  run_in_child_process(const std::function<std::string()>      &work,
+                       const std::function<void(ByteReader &)> &parse,
+                       const std::string                       &file,
+                       const std::string                       &parameter,
+                       const std::string                       &expected)
   {
-    int fds[2];
-    if (::pipe(fds) != 0)
-      return work();
-    const pid_t pid = fork();
-    if (pid < 0)
-      {
-        ::close(fds[0]);
-        ::close(fds[1]);
-        return work();
-      }
-    if (pid == 0)
-      {
-        ::close(fds[0]);
-        run_child(work, fds[1]);
-      }
-    ::close(fds[1]);
-    std::string bytes = receive(fds[0]);
-    ::close(fds[0]);
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-      ;
     const auto crashed = [&](const std::string &how) {
       return InputError(file,
                         parameter,
                         "the reader crashed on this file (" + how +
                           "); expected " + expected);
     };
-    if (WIFSIGNALED(status))
-      throw crashed("signal " + std::to_string(WTERMSIG(status)) + ", " +
-                    strsignal(WTERMSIG(status)));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
-      throw crashed("exit code " + std::to_string(WEXITSTATUS(status)));
-    if (bytes[0] == error_tag)
-      throw InputError(file, parameter, bytes.substr(1));
-    if (bytes[0] != result_tag)
-      throw crashed("its result was cut short");
-    return bytes.substr(1);
+    ByteReader in(child_bytes(work, file, parameter, crashed));
+    try
+      {
+        parse(in);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::runtime_error &)
+      {
+        throw crashed("its result was cut short");
+      }
   }
 } // namespace RestShape

@@ -189,9 +189,8 @@ namespace RestShape
 
     /// The mesh of a triangle soup made by triangle_soup().
     void
-    mesh_of_triangle_soup(const std::string &bytes, Mesh &mesh)
+    mesh_of_triangle_soup(ByteReader &in, Mesh &mesh)
     {
-      ByteReader          in(bytes);
       std::vector<CPoint> points(in.checked_count(24));
       for (CPoint &p : points)
         {
@@ -234,29 +233,17 @@ namespace RestShape
     // CGAL's readers and face triangulation run in a child process: on
     // some malformed files they reach undefined behaviour (found by
     // fuzzing); only checked triangles come back.
-    const std::string expected = "a closed triangulated surface";
-    const std::string soup     = run_in_child_process(
+    Mesh &mesh = data->mesh;
+    run_in_child_process(
       [&file]() {
         Mesh surface;
         read_closed_surface(file, surface);
         return triangle_soup(surface);
       },
+      [&mesh](ByteReader &in) { mesh_of_triangle_soup(in, mesh); },
       file,
       parameter,
-      expected);
-    Mesh &mesh = data->mesh;
-    try
-      {
-        mesh_of_triangle_soup(soup, mesh);
-      }
-    catch (const std::runtime_error &)
-      {
-        throw InputError(file,
-                         parameter,
-                         "the reader crashed on this file (its result was "
-                         "cut short); expected " +
-                           expected);
-      }
+      "a closed triangulated surface");
     for (const auto v : mesh.vertices())
       {
         const CPoint &p = mesh.point(v);

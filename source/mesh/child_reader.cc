@@ -1,5 +1,4 @@
 #include <restshape/base/child_process.h>
-#include <restshape/base/input_error.h>
 #include <restshape/mesh/child_reader.h>
 
 #include <cstdint>
@@ -75,19 +74,12 @@ namespace RestShape
                         const std::string                      &parameter,
                         const std::string                      &expected)
   {
-    ByteReader in(run_in_child_process(
-      [&]() { return serialize(read()); }, file, parameter, expected));
-    try
-      {
-        return deserialize(in);
-      }
-    catch (const std::runtime_error &)
-      {
-        throw InputError(file,
+    MeshDescription mesh;
+    run_in_child_process([&]() { return serialize(read()); },
+                         [&mesh](ByteReader &in) { mesh = deserialize(in); },
+                         file,
                          parameter,
-                         "the reader crashed on this file (its result was "
-                         "cut short); expected " +
-                           expected);
-      }
+                         expected);
+    return mesh;
   }
 } // namespace RestShape

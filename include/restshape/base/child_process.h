@@ -71,18 +71,20 @@ namespace RestShape
   };
 
   /**
-   * Call @p work in a forked child and return the bytes it returns, through
-   * a pipe. An InputError or other exception the child throws is thrown
-   * here as an InputError naming @p file and @p parameter with its message;
-   * a child that dies (a signal, a sanitizer's exit) is an InputError
-   * naming @p file and @p parameter with @p expected. Without fork(),
-   * @p work runs here.
+   * Call @p work in a forked child and give the bytes it returns, through
+   * a pipe, to @p parse here. An InputError or other exception the child
+   * throws is thrown here as an InputError naming @p file and @p parameter
+   * with its message; a child that dies (a signal, a sanitizer's exit) or
+   * whose bytes @p parse finds short (std::runtime_error, as ByteReader
+   * throws) is an InputError naming @p file and @p parameter with
+   * @p expected. Without fork(), @p work runs here.
    */
-  std::string
-  run_in_child_process(const std::function<std::string()> &work,
-                       const std::string                  &file,
-                       const std::string                  &parameter,
-                       const std::string                  &expected);
+  void
+  run_in_child_process(const std::function<std::string()>      &work,
+                       const std::function<void(ByteReader &)> &parse,
+                       const std::string                       &file,
+                       const std::string                       &parameter,
+                       const std::string                       &expected);
 } // namespace RestShape
 
 #endif
