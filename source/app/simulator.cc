@@ -5,6 +5,7 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/interruption.h>
+#include <restshape/base/units.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
@@ -169,7 +170,7 @@ namespace RestShape
     pcout << std::endl;
     const auto [gap, where] = mesh->narrowest_gap();
     if (std::isfinite(gap))
-      pcout << "  " << describe_surface_gap(gap * 1e3, where * 1e3)
+      pcout << "  " << describe_surface_gap(gap * mm_per_m, where * mm_per_m)
             << " (thin flaps border narrow gaps; doc/brain.md)" << std::endl;
   }
 
@@ -302,7 +303,7 @@ namespace RestShape
             beyond = std::to_string(n.n) +
                      " contact nodes of the mesh start beyond the obstacle "
                      "(by up to " +
-                     number_text(n.max * 1e3) + " mm)";
+                     number_text(n.max * mm_per_m) + " mm)";
             pcout << "Contact: " << beyond
                   << ": the forward solve brings them onto it" << std::endl;
           }
@@ -344,10 +345,10 @@ namespace RestShape
 
     for (const InverseIterationRecord &r : inverse->records())
       iteration_rows.push_back({double(r.iteration),
-                                r.mean_error * 1e3,
-                                r.max_error * 1e3,
-                                r.mean_image_error * 1e3,
-                                r.max_image_error * 1e3,
+                                r.mean_error * mm_per_m,
+                                r.max_error * mm_per_m,
+                                r.mean_image_error * mm_per_m,
+                                r.max_image_error * mm_per_m,
                                 double(r.newton_iterations),
                                 double(r.active_contact_nodes),
                                 r.wall_seconds,
@@ -378,20 +379,20 @@ namespace RestShape
         summary.set("direct_inverse_jacobian_products",
                     long(inverse_result.direct.jacobian_products));
       }
-    summary.set("mean_error_mm", inverse_result.mean_error * 1e3);
-    summary.set("max_error_mm", inverse_result.max_error * 1e3);
+    summary.set("mean_error_mm", inverse_result.mean_error * mm_per_m);
+    summary.set("max_error_mm", inverse_result.max_error * mm_per_m);
     if (contact)
       {
         summary.set("mean_error_to_image_mm",
-                    inverse_result.mean_image_error * 1e3);
+                    inverse_result.mean_image_error * mm_per_m);
         summary.set("max_error_to_image_mm",
-                    inverse_result.max_image_error * 1e3);
+                    inverse_result.max_image_error * mm_per_m);
         summary.set("unreachable_target_nodes",
                     long(inverse_result.unreachable_nodes));
         summary.set("unreachable_target_max_mm",
-                    inverse_result.unreachable_max * 1e3);
+                    inverse_result.unreachable_max * mm_per_m);
         summary.set("unreachable_target_mean_mm",
-                    inverse_result.unreachable_mean * 1e3);
+                    inverse_result.unreachable_mean * mm_per_m);
         // Only where the projection inverted cells (TargetRelaxation).
         const TargetRelaxationResult &relaxed = inverse_result.relaxation;
         if (relaxed.inverted_before > 0)
@@ -400,7 +401,7 @@ namespace RestShape
                         long(relaxed.inverted_before));
             summary.set("target_relaxed_nodes", long(relaxed.moved_nodes));
             summary.set("target_relaxation_max_mm",
-                        relaxed.largest_change * 1e3);
+                        relaxed.largest_change * mm_per_m);
           }
       }
 
@@ -430,8 +431,8 @@ namespace RestShape
           << " iterations (" << inverse_result.forward_solves
           << " forward solves, " << inverse_result.newton_iterations
           << " Newton iterations): mean error "
-          << inverse_result.mean_error * 1e3 << " mm, max "
-          << inverse_result.max_error * 1e3 << " mm" << std::endl;
+          << inverse_result.mean_error * mm_per_m << " mm, max "
+          << inverse_result.max_error * mm_per_m << " mm" << std::endl;
 
     write_rest_shape();
     return stats;
@@ -578,25 +579,29 @@ namespace RestShape
       out
         << std::setprecision(6)
         << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
-        << "prestressed," << prestressed.first * 1e3 << ','
-        << prestressed.second * 1e3 << ',' << s1.newton_iterations << ','
+        << "prestressed," << prestressed.first * mm_per_m << ','
+        << prestressed.second * mm_per_m << ',' << s1.newton_iterations << ','
         << s1.converged << '\n'
-        << "not_prestressed," << unstressed.first * 1e3 << ','
-        << unstressed.second * 1e3 << ',' << s2.newton_iterations << ','
+        << "not_prestressed," << unstressed.first * mm_per_m << ','
+        << unstressed.second * mm_per_m << ',' << s2.newton_iterations << ','
         << s2.converged << '\n'
         << "increase_percent," << increase(prestressed.first, unstressed.first)
         << ',' << increase(prestressed.second, unstressed.second) << ",,\n";
     });
-    summary.set("prestressed_mean_displacement_mm", prestressed.first * 1e3);
-    summary.set("prestressed_max_displacement_mm", prestressed.second * 1e3);
-    summary.set("not_prestressed_mean_displacement_mm", unstressed.first * 1e3);
-    summary.set("not_prestressed_max_displacement_mm", unstressed.second * 1e3);
-    pcout << "  pre-stressed: mean " << prestressed.first * 1e3 << " mm, max "
-          << prestressed.second * 1e3 << " mm; not pre-stressed: mean "
-          << unstressed.first * 1e3 << " mm, max " << unstressed.second * 1e3
-          << " mm (" << std::showpos
-          << increase(prestressed.first, unstressed.first) << " % / "
-          << increase(prestressed.second, unstressed.second) << " %)"
+    summary.set("prestressed_mean_displacement_mm",
+                prestressed.first * mm_per_m);
+    summary.set("prestressed_max_displacement_mm",
+                prestressed.second * mm_per_m);
+    summary.set("not_prestressed_mean_displacement_mm",
+                unstressed.first * mm_per_m);
+    summary.set("not_prestressed_max_displacement_mm",
+                unstressed.second * mm_per_m);
+    pcout << "  pre-stressed: mean " << prestressed.first * mm_per_m
+          << " mm, max " << prestressed.second * mm_per_m
+          << " mm; not pre-stressed: mean " << unstressed.first * mm_per_m
+          << " mm, max " << unstressed.second * mm_per_m << " mm ("
+          << std::showpos << increase(prestressed.first, unstressed.first)
+          << " % / " << increase(prestressed.second, unstressed.second) << " %)"
           << std::noshowpos << std::endl;
   }
 

@@ -2,6 +2,7 @@
 // supports, pieces, obstacle placement, load scales.
 #include <restshape/app/simulator.h>
 #include <restshape/base/input_error.h>
+#include <restshape/base/units.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/mesh/mesh_pieces.h>
 
@@ -56,7 +57,8 @@ namespace RestShape
     // floats: its rigid motion makes the problem singular.
     for (const UnheldPiece &piece : mesh->unheld_pieces(held_labels()))
       if (piece.n_joints > 0)
-        pcout << "Warning: " << piece.text(1e3 / parameters.mesh.length_unit)
+        pcout << "Warning: "
+              << piece.text(mm_per_m / parameters.mesh.length_unit)
               << ": only that joint holds it (no fixed label in it, no "
                  "contact or elastic support), so it turns about it without "
                  "resistance until the load holds it"
@@ -65,7 +67,7 @@ namespace RestShape
         throw InputError(
           prm_file,
           "Mesh/File, Boundary conditions/Fixed labels",
-          piece.text(1e3 / parameters.mesh.length_unit) +
+          piece.text(mm_per_m / parameters.mesh.length_unit) +
             ", with no fixed label, contact or elastic support: the problem "
             "is singular (free rigid-body motion); expected each piece of "
             "the mesh fixed or joined by faces to a fixed one");
@@ -142,7 +144,7 @@ namespace RestShape
     std::string text;
     for (const UnheldPiece &piece : mesh->unheld_pieces(held_labels()))
       text += (text.empty() ? "" : "; ") +
-              piece.text(1e3 / parameters.mesh.length_unit);
+              piece.text(mm_per_m / parameters.mesh.length_unit);
     return text.empty() ? text :
                           text + " (nothing but its joint holds it against "
                                  "rotation: the tangent is singular there)";

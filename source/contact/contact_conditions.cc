@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/units.h>
 #include <restshape/contact/contact.h>
 
 #include <cmath>
@@ -85,12 +86,12 @@ namespace RestShape
       std::snprintf(buffer,
                     sizeof(buffer),
                     "(%.4g, %.4g, %.4g)-(%.4g, %.4g, %.4g) mm",
-                    1e3 * a[0],
-                    1e3 * a[1],
-                    1e3 * a[2],
-                    1e3 * b[0],
-                    1e3 * b[1],
-                    1e3 * b[2]);
+                    mm_per_m * a[0],
+                    mm_per_m * a[1],
+                    mm_per_m * a[2],
+                    mm_per_m * b[0],
+                    mm_per_m * b[1],
+                    mm_per_m * b[2]);
       return std::string(buffer);
     };
     std::vector<Point<3>> positions;
@@ -109,7 +110,7 @@ namespace RestShape
         std::to_string(outside) + " of " + std::to_string(n) +
           " contact candidates lie on the wrong side of the obstacle, deeper "
           "than " +
-          number_text(1e3 * deep_fraction * size) +
+          number_text(mm_per_m * deep_fraction * size) +
           " mm (5 % of the body), in the " +
           std::string(shift != nullptr ? "target the mesh carries" :
                                          "mesh geometry") +
@@ -122,8 +123,8 @@ namespace RestShape
                      "Contact/Obstacle file",
                      "every contact candidate is farther from the obstacle "
                      "than the body's size (nearest " +
-                       number_text(1e3 * clearance) + " mm, body " +
-                       number_text(1e3 * size) + " mm" + boxes +
+                       number_text(mm_per_m * clearance) + " mm, body " +
+                       number_text(mm_per_m * size) + " mm" + boxes +
                        "): no contact can occur; expected the obstacle near "
                        "the body (check Contact/Length unit)");
   }
@@ -170,7 +171,7 @@ namespace RestShape
               std::to_string(f.label) + ": " + std::to_string(beyond) +
               " of its " + std::to_string(n) +
               " vertices lie on the wrong side, by up to " +
-              number_text(1e3 * worst) +
+              number_text(mm_per_m * worst) +
               " mm; expected the fixed labels on the allowed side (check "
               "Contact/Side, Contact/Length unit and the obstacle's "
               "placement)");

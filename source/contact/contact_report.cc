@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
+#include <restshape/base/units.h>
 #include <restshape/contact/contact.h>
 
 #include <algorithm>
@@ -66,7 +67,7 @@ namespace RestShape
   {
     const Violations v = violations();
     char             buffer[128];
-    std::snprintf(buffer, sizeof(buffer), "%.2e", v.worst * 1e3);
+    std::snprintf(buffer, sizeof(buffer), "%.2e", v.worst * mm_per_m);
     return "the contact conditions do not settle: " +
            std::to_string(v.through) + " nodes through the obstacle, " +
            std::to_string(v.off) + " active nodes off it (by up to " + buffer +

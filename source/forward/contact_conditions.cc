@@ -1,4 +1,5 @@
 // The contact conditions of a state, in words.
+#include <restshape/base/units.h>
 #include <restshape/forward/contact_conditions.h>
 
 #include <cstdio>
@@ -27,9 +28,9 @@ namespace RestShape
                     what,
                     v.worst * scale,
                     unit,
-                    1e3 * v.where[0],
-                    1e3 * v.where[1],
-                    1e3 * v.where[2]);
+                    mm_per_m * v.where[0],
+                    mm_per_m * v.where[1],
+                    mm_per_m * v.where[2]);
       return buffer;
     }
   } // namespace
@@ -39,8 +40,8 @@ namespace RestShape
   {
     std::string result;
     for (const std::string &part :
-         {describe(through, "through the obstacle", 1e3, "mm"),
-          describe(off, "active but off the obstacle", 1e3, "mm"),
+         {describe(through, "through the obstacle", mm_per_m, "mm"),
+          describe(off, "active but off the obstacle", mm_per_m, "mm"),
           describe(pulling, "pulling on the obstacle", 1, "Pa")})
       if (!part.empty())
         result += (result.empty() ? "" : "; ") + part;

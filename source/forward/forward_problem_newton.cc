@@ -2,6 +2,7 @@
 // tolerances), inside load stepping.
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
 
 #include <algorithm>
@@ -49,9 +50,9 @@ namespace RestShape
                   sizeof(text),
                   "label %u at (%.1f, %.1f, %.1f) mm of the mesh",
                   static_cast<unsigned int>(label),
-                  1e3 * center[0],
-                  1e3 * center[1],
-                  1e3 * center[2]);
+                  mm_per_m * center[0],
+                  mm_per_m * center[1],
+                  mm_per_m * center[2]);
     return text;
   }
 

@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/load_scales.h>
 
@@ -98,10 +99,10 @@ namespace RestShape
                   "mass %.4g kg; Young's modulus %.4g Pa (volume mean of the "
                   "free cells); strain of the weight rho g H / E = "
                   "%.3g, of the surface pressure p / E = %.3g",
-                  1e3 * extent[0],
-                  1e3 * extent[1],
-                  1e3 * extent[2],
-                  1e3 * height,
+                  mm_per_m * extent[0],
+                  mm_per_m * extent[1],
+                  mm_per_m * extent[2],
+                  mm_per_m * height,
                   mass,
                   E,
                   gravity_strain,

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/stability.h>
 
@@ -107,9 +108,9 @@ namespace RestShape
                     "(%.1f, %.1f, %.1f) mm (label %u)",
                     smallest_eigenvalue,
                     std::sqrt(smallest_eigenvalue) / (2 * M_PI),
-                    1e3 * peak[0],
-                    1e3 * peak[1],
-                    1e3 * peak[2],
+                    mm_per_m * peak[0],
+                    mm_per_m * peak[1],
+                    mm_per_m * peak[2],
                     static_cast<unsigned int>(label));
     else
       std::snprintf(buffer,
@@ -122,9 +123,9 @@ namespace RestShape
                     "(label %u)",
                     negative_eigenvalues,
                     smallest_eigenvalue,
-                    1e3 * peak[0],
-                    1e3 * peak[1],
-                    1e3 * peak[2],
+                    mm_per_m * peak[0],
+                    mm_per_m * peak[1],
+                    mm_per_m * peak[2],
                     static_cast<unsigned int>(label));
     return buffer;
   }

@@ -1,4 +1,5 @@
 #include <restshape/base/input_error.h>
+#include <restshape/base/units.h>
 #include <restshape/inverse/inverse_problem.h>
 #include <restshape/inverse/load_path.h>
 
@@ -19,7 +20,7 @@ namespace RestShape
     mm(const double metres)
     {
       char buffer[64];
-      std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * 1e3);
+      std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * mm_per_m);
       return buffer;
     }
 

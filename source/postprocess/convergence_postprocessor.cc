@@ -1,4 +1,5 @@
 // convergence.csv and convergence.txt: one row per refinement cycle.
+#include <restshape/base/units.h>
 #include <restshape/postprocess/convergence_postprocessor.h>
 
 #include <sstream>
@@ -37,7 +38,7 @@ namespace RestShape
       add_errors(in, *in.exact_rest, in.forward.rest_displacement(), "rest_");
     if (in.parameters.inverse.enabled)
       {
-        row.push_back(in.inverse_mean_error * 1e3);
+        row.push_back(in.inverse_mean_error * mm_per_m);
         header.push_back("mean_error_mm");
       }
     row.push_back(in.wall_seconds);
@@ -89,7 +90,7 @@ namespace RestShape
     const DisplacementErrors errors = exact.errors(in.forward, field);
     table.add_value(key + "L2_rel", errors.l2_relative);
     table.add_value(key + "H1_rel", errors.h1_relative);
-    table.add_value(key + "max_nodal_mm", errors.max_nodal_error * 1e3);
+    table.add_value(key + "max_nodal_mm", errors.max_nodal_error * mm_per_m);
     for (const std::string k : {"L2_rel", "H1_rel", "max_nodal_mm"})
       {
         table.set_scientific(key + k, true);
@@ -99,18 +100,19 @@ namespace RestShape
     row.insert(row.end(),
                {errors.l2_relative,
                 errors.h1_relative,
-                errors.max_nodal_error * 1e3});
+                errors.max_nodal_error * mm_per_m});
     header.insert(header.end(),
                   {key + "l2_error_relative",
                    key + "h1_error_relative",
                    key + "max_nodal_error_mm"});
     in.summary.set(key + "l2_error_relative", errors.l2_relative);
     in.summary.set(key + "h1_error_relative", errors.h1_relative);
-    in.summary.set(key + "max_nodal_error_mm", errors.max_nodal_error * 1e3);
+    in.summary.set(key + "max_nodal_error_mm",
+                   errors.max_nodal_error * mm_per_m);
     in.pcout << "  Error of the "
              << (key.empty() ? "displacement" : "rest shape")
              << " against the exact one: L2 " << errors.l2_relative << ", H1 "
              << errors.h1_relative << " (relative), max nodal "
-             << errors.max_nodal_error * 1e3 << " mm" << std::endl;
+             << errors.max_nodal_error * mm_per_m << " mm" << std::endl;
   }
 } // namespace RestShape

@@ -1,6 +1,7 @@
 // nodes.csv: per node its position, displacement and rest shift.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/units.h>
 #include <restshape/postprocess/nodal_csv.h>
 
 namespace RestShape
@@ -19,9 +20,9 @@ namespace RestShape
         for (unsigned int c = 0; c < 3; ++c)
           row.push_back(node.position[c] * in.output.length_scale());
         for (unsigned int c = 0; c < 3; ++c)
-          row.push_back(in.u[node.dofs[c]] * 1e3);
+          row.push_back(in.u[node.dofs[c]] * mm_per_m);
         for (unsigned int c = 0; c < 3; ++c)
-          row.push_back(w[node.dofs[c]] * 1e3);
+          row.push_back(w[node.dofs[c]] * mm_per_m);
         rows.push_back(row);
       }
     std::vector<std::vector<double>> all_rows;

@@ -1,6 +1,7 @@
 // The list of postprocessors and the reductions they share.
 #include <deal.II/base/mpi.h>
 
+#include <restshape/base/units.h>
 #include <restshape/postprocess/convergence_postprocessor.h>
 #include <restshape/postprocess/nodal_csv.h>
 #include <restshape/postprocess/postprocessor.h>
@@ -20,8 +21,8 @@ namespace RestShape
   {
     SolveReductions r;
     const auto [mean_u, max_u] = forward.nodal_norms(u);
-    r.mean_displacement_mm     = mean_u * 1e3;
-    r.max_displacement_mm      = max_u * 1e3;
+    r.mean_displacement_mm     = mean_u * mm_per_m;
+    r.max_displacement_mm      = max_u * mm_per_m;
     r.n_nodes = Utilities::MPI::sum(double(forward.owned_nodes().size()), comm);
     r.external = forward.total_external_force(forward.load());
     r.reaction = forward.support_reaction();

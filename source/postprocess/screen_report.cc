@@ -1,4 +1,5 @@
 // The screen lines after a solve.
+#include <restshape/base/units.h>
 #include <restshape/postprocess/screen_report.h>
 
 namespace RestShape
@@ -14,7 +15,7 @@ namespace RestShape
       const ContactConditions &conditions = in.forward.contact_conditions();
       in.pcout << "  Contact: " << contact.n_active() << " active nodes, force "
                << in.reductions.contact << " N, largest penetration "
-               << conditions.max_penetration * 1e3 << " mm; "
+               << conditions.max_penetration * mm_per_m << " mm; "
                << conditions.text() << std::endl;
       if (conditions.outside > 0)
         in.pcout << "  Contact: " << conditions.outside
@@ -26,7 +27,7 @@ namespace RestShape
         in.pcout << "  Contact: " << n_fixed
                  << " nodes on fixed planes (their planes kept changing), up "
                     "to "
-                 << fixed_distance * 1e3 << " mm off the obstacle surface"
+                 << fixed_distance * mm_per_m << " mm off the obstacle surface"
                  << std::endl;
       const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
       if (adhesion.nodes > 0)

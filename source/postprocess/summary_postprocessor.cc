@@ -1,4 +1,5 @@
 // summary.json after a solve.
+#include <restshape/base/units.h>
 #include <restshape/postprocess/summary_postprocessor.h>
 
 namespace RestShape
@@ -20,13 +21,13 @@ namespace RestShape
                   long(in.stats.active_set_changes + 1));
       const ContactConditions &conditions = in.forward.contact_conditions();
       summary.set("contact_conditions_hold", conditions.satisfied());
-      summary.set("max_penetration_mm", conditions.max_penetration * 1e3);
+      summary.set("max_penetration_mm", conditions.max_penetration * mm_per_m);
       summary.set("max_pull_Pa", conditions.pulling.worst);
       summary.set("nodes_off_obstacle", long(conditions.off.nodes));
       summary.set("nodes_outside", long(conditions.outside));
       const auto [n_fixed, fixed_distance] = in.reductions.fixed_planes;
       summary.set("fixed_plane_nodes", long(n_fixed));
-      summary.set("fixed_plane_distance_mm", fixed_distance * 1e3 + 0.);
+      summary.set("fixed_plane_distance_mm", fixed_distance * mm_per_m + 0.);
       const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
       summary.set("adhesive_contact_nodes", long(adhesion.nodes));
       summary.set("adhesive_force_N", adhesion.force);
@@ -36,7 +37,7 @@ namespace RestShape
       summary.set("contact_pressure_min_Pa", p_min);
       summary.set("contact_pressure_max_Pa", p_max);
       summary.set("contact_patch_radius_mm",
-                  contact.patch_radius(in.reductions.contact) * 1e3);
+                  contact.patch_radius(in.reductions.contact) * mm_per_m);
     }
 
     /// A forward run from a rest shape: how far the equilibrium is from
@@ -52,13 +53,13 @@ namespace RestShape
       const auto [mean_e, max_e] =
         from_rest_file ? in.forward.nodal_norms(in.forward.displacement()) :
                          in.forward.distance_to(in.mesh.targets());
-      in.summary.set("mean_error_mm", mean_e * 1e3);
-      in.summary.set("max_error_mm", max_e * 1e3);
+      in.summary.set("mean_error_mm", mean_e * mm_per_m);
+      in.summary.set("max_error_mm", max_e * mm_per_m);
       in.pcout << (from_rest_file ?
                      "  Equilibrium vs mesh geometry" :
                      "  Equilibrium vs the target carried by " + p.mesh.file)
-               << ": mean " << mean_e * 1e3 << " mm, max " << max_e * 1e3
-               << " mm" << std::endl;
+               << ": mean " << mean_e * mm_per_m << " mm, max "
+               << max_e * mm_per_m << " mm" << std::endl;
     }
   } // namespace
 

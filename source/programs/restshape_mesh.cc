@@ -8,6 +8,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/interruption.h>
 #include <restshape/base/machine_memory.h>
+#include <restshape/base/units.h>
 #include <restshape/base/version.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/mesh/gmsh_io.h>
@@ -495,7 +496,7 @@ namespace
     const auto     nodes   = boundary_vertices(mesh);
     for (const unsigned int v : nodes)
       {
-        const double gap = skull.gap(mesh.vertices[v]).gap * 1e3;
+        const double gap = skull.gap(mesh.vertices[v]).gap * mm_per_m;
         min_gap          = std::min(min_gap, gap);
         max_gap          = std::max(max_gap, gap);
         sum += gap;
