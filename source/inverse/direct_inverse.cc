@@ -18,8 +18,10 @@ namespace RestShape
   {
     /// Newton stops at |R| <= this times |R| at the initial rest shape
     /// under the full load; on the way to the full load, at the looser
-    /// step tolerance.
-    constexpr double       newton_tolerance = 1e-9;
+    /// step tolerance. (Not Solver/Newton tolerance, which measures |R|
+    /// against the load vector: the forward solve of the fixed point that
+    /// follows checks the rest shape against that one.)
+    constexpr double       final_reduction  = 1e-9;
     constexpr double       step_tolerance   = 1e-6;
     constexpr unsigned int max_newton_steps = 15; // per load step
     /// A Newton step that keeps more than this of |R| makes slow progress;
@@ -115,7 +117,7 @@ namespace RestShape
         VectorType   w   = rest;
         load             = between(LoadState(), scene_load, s);
         const bool final = (s == 1);
-        if (newton(w, final ? newton_tolerance : step_tolerance, s))
+        if (newton(w, final ? final_reduction : step_tolerance, s))
           {
             rest      = w;
             done      = s;
