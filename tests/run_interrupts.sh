@@ -21,6 +21,8 @@ fail() {
   echo "FAIL (round $round, signal $signal after $delay s): $1"
   ls -la --time-style=full-iso "$out"
   cat "$out/summary.json" 2>/dev/null
+  echo "== the run's screen output:"
+  tail -n 20 "$work/round_$round.log" 2>/dev/null
   exit 1
 }
 
