@@ -105,6 +105,16 @@ namespace RestShape
   LabelValues
   LabelValues::parse(const std::string &text, const std::string &parameter)
   {
+    return parse(text, parameter, [&](const std::string &value) {
+      return parse_number(parameter, value);
+    });
+  }
+
+  LabelValues
+  LabelValues::parse(const std::string &text,
+                     const std::string &parameter,
+                     const std::function<double(const std::string &)> &value)
+  {
     LabelValues result;
     result.parameter                     = parameter;
     const std::vector<std::string> items = split_list(text);
@@ -124,23 +134,21 @@ namespace RestShape
                                "'" + item +
                                  "' has no label; in a list every entry "
                                  "must be 'label:value'");
-            result.value_for_all = parse_number(parameter, item);
+            result.value_for_all = value(item);
           }
         else if (key_of(item) == "*")
           {
             if (result.value_for_all)
               throw InputError("", parameter, "the default '*' is given twice");
-            result.value_for_all =
-              parse_number(parameter, item.substr(colon + 1));
+            result.value_for_all = value(item.substr(colon + 1));
           }
         else
           {
             const auto [first, last] =
               parse_label_range(item.substr(0, colon), parameter);
-            const double value =
-              parse_number(parameter, item.substr(colon + 1));
+            const double v = value(item.substr(colon + 1));
             for (long l = first; l <= long(last); ++l)
-              if (!result.per_label.emplace(Label(l), value).second)
+              if (!result.per_label.emplace(Label(l), v).second)
                 throw InputError("",
                                  parameter,
                                  "label " + std::to_string(l) +

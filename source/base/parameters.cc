@@ -23,6 +23,8 @@ namespace RestShape
       {"Materials", "Young's modulus", true},
       {"Materials", "Poisson's ratio", true},
       {"Materials", "Density", true},
+      {"Materials", "Material law", true},
+      {"Materials", "Ogden alpha", true},
       {"Boundary conditions", "Fixed labels", false},
       {"Boundary conditions", "Elastic support labels", false},
       {"Loads", "Pressure labels", false},
@@ -138,19 +140,19 @@ namespace RestShape
       "Tangent",
       "consistent",
       Patterns::Selection("consistent|projected|adaptive|warped"),
-      "Newton tangent of the co-rotational law. consistent: "
-      "exact derivative including the derivative of the "
-      "rotation (quadratic convergence). projected: the "
-      "exact derivative with its negative eigenvalues (the "
+      "Newton tangent of the material law (Materials/Material law). "
+      "consistent: the exact derivative (for the co-rotational law "
+      "including the derivative of the rotation; quadratic convergence). "
+      "projected: the exact derivative with its negative eigenvalues (the "
       "rotational modes of compressed points) set to zero, "
       "so the stiffness stays positive semi-definite "
       "(projected Newton; equal to consistent wherever that "
       "is positive; converges linearly where it differs). "
       "adaptive: consistent, but after a Newton step whose "
       "line search had to shorten the step, one step with "
-      "the projected tangent. warped: R K0 R^T as in SOFA and Mueller "
-      "et al. 2002 (no dR term; linear convergence), kept "
-      "for comparison.");
+      "the projected tangent. warped: co-rotational law only, R K0 R^T as "
+      "in SOFA and Mueller et al. 2002 (no dR term; linear convergence), "
+      "kept for comparison; other laws use their exact tangent.");
     prm.leave_subsection();
   }
 
@@ -193,6 +195,34 @@ namespace RestShape
                       "kept when the rest shape changes): one value or "
                       "'label:value' list (ranges and '*' as for Young's "
                       "modulus). Must be >= 0.");
+    prm.declare_entry(
+      "Material law",
+      "corotational",
+      Patterns::Anything(),
+      "The hyperelastic law of the tissue: one name for all labels or a "
+      "'label:name' list (ranges and '*' as for Young's modulus). "
+      "corotational: linear elasticity in the rotated frame of each point "
+      "(stiffness constant, fast; cells can collapse under compressive "
+      "strains of order one); neo-Hookean: compressible neo-Hookean, "
+      "W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 (its energy grows "
+      "without bound as a cell collapses: for strains of order one); "
+      "Ogden: compressible one-term Ogden, W = 2 mu/alpha^2 (sum of the "
+      "principal stretches to the power alpha - 3 - alpha ln J) + lambda/2 "
+      "(ln J)^2, with alpha from Ogden alpha (the brain's law: Budday et al. "
+      "2017). All take mu and lambda from Young's modulus and Poisson's "
+      "ratio (mu = E / (2 (1 + nu))), and agree at small strain.");
+    prm.declare_entry("Ogden alpha",
+                      "-19",
+                      Patterns::Anything(),
+                      "The exponent alpha of the Ogden law (dimensionless, "
+                      "nonzero, |alpha| <= 100): one value or 'label:value' "
+                      "list (ranges and '*' as for Young's modulus). "
+                      "Negative values stiffen the tissue in compression "
+                      "more than in tension, as brain tissue does (alpha = "
+                      "-19 with mu = 670 Pa fits in vivo positional brain "
+                      "shift, Bennion et al. 2022); alpha = 2 is the "
+                      "neo-Hookean law. Used by labels whose Material law "
+                      "is Ogden.");
     prm.leave_subsection();
   }
 
@@ -205,6 +235,9 @@ namespace RestShape
     poissons_ratio = LabelValues::parse(prm.get("Poisson's ratio"),
                                         "Materials/Poisson's ratio");
     density = LabelValues::parse(prm.get("Density"), "Materials/Density");
+    law     = prm.get("Material law");
+    ogden_alpha =
+      LabelValues::parse(prm.get("Ogden alpha"), "Materials/Ogden alpha");
     prm.leave_subsection();
 
     const auto where = [](const LabelValues &values, const Label l) {
@@ -239,6 +272,15 @@ namespace RestShape
                          "rho = " + number_text(rho) + " kg/m^3" +
                            where(density, label) + "; expected 0 <= rho <= " +
                            number_text(max_density) + " kg/m^3");
+    constexpr double max_ogden_alpha = 100; // stretch^alpha overflows beyond
+    for (const auto &[label, alpha] : ogden_alpha.listed())
+      if (!(alpha != 0 && std::abs(alpha) <= max_ogden_alpha))
+        throw InputError("",
+                         "Materials/Ogden alpha",
+                         "alpha = " + number_text(alpha) +
+                           where(ogden_alpha, label) +
+                           "; expected a nonzero exponent with |alpha| <= " +
+                           number_text(max_ogden_alpha));
   }
 
   void

@@ -107,8 +107,8 @@ namespace RestShape
     fe_values[u].get_function_gradients(d_buffer, scratch.grad_d);
     fe_values[u].get_function_gradients(w_buffer, scratch.grad_w);
 
-    const Label            label = cell->material_id();
-    const CorotationalLaw &law   = material_table.law(label);
+    const Label        label = cell->material_id();
+    const MaterialLaw &law   = material_table.law(label);
     // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
     // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
     const Tensor<1, 3> body_force =

@@ -117,8 +117,8 @@ namespace RestShape
           fe_values.reinit(cell);
           fe_values[u].get_function_gradients(d_ghost, grad_d);
           fe_values[u].get_function_gradients(w_ghost, grad_w);
-          const CorotationalLaw &law = material_table.law(cell->material_id());
-          double                 sum = 0, volume = 0;
+          const MaterialLaw &law = material_table.law(cell->material_id());
+          double             sum = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const Tensor2 F = (I + grad_d[q]) * invert(I + grad_w[q]);

@@ -110,8 +110,8 @@ namespace RestShape
       Tensor<2, 3>
       stress(const types::material_id label, const Tensor<2, 3> &grad_u)
       {
-        const CorotationalLaw &law = problem.materials().law(label);
-        Tensor<2, 3>           P;
+        const MaterialLaw &law = problem.materials().law(label);
+        Tensor<2, 3>       P;
         if (law.evaluate(unit_symmetric_tensor<3>() + grad_u,
                          P,
                          nullptr,

@@ -26,35 +26,6 @@ using namespace RestShape::Test;
 
 namespace
 {
-  double
-  tangent_error(const CorotationalLaw &law,
-                const Tensor2         &F,
-                const TangentType      type)
-  {
-    Tensor2 P;
-    Tensor4 A;
-    law.evaluate(F, P, &A, type);
-    double error = 0, scale = 0;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int L = 0; L < 3; ++L)
-        {
-          const double h  = 1e-6;
-          Tensor2      Fp = F, Fm = F, Pp, Pm;
-          Fp[k][L] += h;
-          Fm[k][L] -= h;
-          law.evaluate(Fp, Pp, nullptr, type);
-          law.evaluate(Fm, Pm, nullptr, type);
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int J = 0; J < 3; ++J)
-              {
-                const double fd = (Pp[i][J] - Pm[i][J]) / (2 * h);
-                error           = std::max(error, std::abs(fd - A[i][J][k][L]));
-                scale           = std::max(scale, std::abs(fd));
-              }
-        }
-    return error / scale;
-  }
-
   void
   material_point_checks()
   {

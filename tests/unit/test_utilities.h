@@ -15,6 +15,7 @@
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/mesh/mesh_transforms.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -33,6 +34,37 @@ namespace RestShape::Test
     std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << value << " (limit "
               << limit << ")" << std::endl;
     failures += !ok;
+  }
+
+  /// The tangent of @p law at @p F against central differences of its
+  /// stress: max |difference - tangent| / max |difference| over entries.
+  inline double
+  tangent_error(const MaterialLaw &law,
+                const Tensor2     &F,
+                const TangentType  type = TangentType::consistent)
+  {
+    Tensor2 P;
+    Tensor4 A;
+    law.evaluate(F, P, &A, type);
+    double error = 0, scale = 0;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int L = 0; L < 3; ++L)
+        {
+          constexpr double h  = 1e-6;
+          Tensor2          Fp = F, Fm = F, Pp, Pm;
+          Fp[k][L] += h;
+          Fm[k][L] -= h;
+          law.evaluate(Fp, Pp, nullptr, type);
+          law.evaluate(Fm, Pm, nullptr, type);
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int J = 0; J < 3; ++J)
+              {
+                const double fd = (Pp[i][J] - Pm[i][J]) / (2 * h);
+                error           = std::max(error, std::abs(fd - A[i][J][k][L]));
+                scale           = std::max(scale, std::abs(fd));
+              }
+        }
+    return error / scale;
   }
 
   inline void

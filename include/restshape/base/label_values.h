@@ -6,6 +6,7 @@
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +31,12 @@ namespace RestShape
   public:
     static LabelValues
     parse(const std::string &text, const std::string &parameter);
+    /// The same with values that are not numbers: @p value turns each
+    /// value's text into a number (or throws InputError).
+    static LabelValues
+    parse(const std::string                                &text,
+          const std::string                                &parameter,
+          const std::function<double(const std::string &)> &value);
 
     /// The value of @p label; throws InputError if there is none.
     double

@@ -101,6 +101,10 @@ namespace RestShape
     LabelValues youngs_modulus; // Pa
     LabelValues poissons_ratio; // -
     LabelValues density;        // kg/m^3
+    /// Materials/Material law as written: a law's name, or 'label:name'
+    /// list (parsed against the laws by MaterialTable).
+    std::string law = "corotational";
+    LabelValues ogden_alpha; // -, Materials/Ogden alpha
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -1,5 +1,4 @@
-// The co-rotational linear elastic law at one quadrature point, and the
-// per-label material table.
+// The per-label material table, and stress measures.
 #ifndef restshape_material_h
 #define restshape_material_h
 
@@ -8,73 +7,15 @@
 
 #include <restshape/base/label_values.h>
 #include <restshape/base/parameters.h>
+#include <restshape/forward/corotational_law.h>
+#include <restshape/forward/material_law.h>
 
 #include <map>
+#include <memory>
 #include <set>
 
 namespace RestShape
 {
-  using Tensor2 = dealii::Tensor<2, 3>;
-  using Tensor4 = dealii::Tensor<4, 3>;
-
-  /// The skew matrix W with W v = w x v.
-  Tensor2
-  skew_matrix(const dealii::Tensor<1, 3> &w);
-
-  /**
-   * Polar decomposition F = R S with R a proper rotation and S symmetric,
-   * by Higham's scaled Newton iteration. Returns false (and leaves R, S
-   * unchanged) if det F <= 0.
-   */
-  bool
-  polar_decomposition(const Tensor2 &F, Tensor2 &R, Tensor2 &S);
-
-  /**
-   * Co-rotational linear elasticity (Mueller et al. 2002; the "corotated"
-   * model of McAdams et al. 2011 and Sifakis & Barbic 2012):
-   *   W(F) = mu |F - R|^2 + lambda/2 tr(S - I)^2,
-   *   P    = 2 mu (F - R) + lambda tr(S - I) R.
-   * The rotation-free part S of F carries all the stress: a rigid motion
-   * gives P = 0 exactly.
-   */
-  class CorotationalLaw
-  {
-  public:
-    CorotationalLaw() = default;
-    CorotationalLaw(const double youngs_modulus, const double poissons_ratio);
-
-    /**
-     * First Piola-Kirchhoff stress and, if @p tangent is not null, dP/dF as
-     * A[i][J][k][L] = d P_iJ / d F_kL. consistent: exact derivative (with
-     * dR/dF from W S + S W = skew(R^T dF - dF^T R)); projected: consistent
-     * with the negative eigenvalues removed; warped: R C0 sym(R^T dF)
-     * with R held fixed (SOFA's R K0 R^T). Returns false if det F <= 0.
-     */
-    bool
-    evaluate(const Tensor2    &F,
-             Tensor2          &P,
-             Tensor4          *tangent,
-             const TangentType type,
-             double           *energy = nullptr) const;
-
-    double
-    energy_density(const Tensor2 &F) const;
-
-    /**
-     * Subtract from the consistent tangent @p A its negative eigenvalues:
-     * those of the rotational ("twist") modes R skew(q_k) of compressed
-     * points, q_k the eigenvectors of S (projected Newton).
-     */
-    void
-    project_twist_modes(const Tensor2 &R,
-                        const Tensor2 &S,
-                        const double   tr_E,
-                        Tensor4       &A) const;
-
-    double mu     = 0;
-    double lambda = 0;
-  };
-
   /// Cauchy stress sigma = P F^T / det F.
   dealii::SymmetricTensor<2, 3>
   cauchy_stress(const Tensor2 &F, const Tensor2 &P);
@@ -86,11 +27,14 @@ namespace RestShape
   class MaterialTable
   {
   public:
-    /// Throws InputError if a label has no value.
+    /// Throws InputError if a label has no value or an unknown law.
     MaterialTable(const MaterialParameters &prm, const std::set<Label> &labels);
 
-    const CorotationalLaw &
+    const MaterialLaw &
     law(const Label label) const;
+    /// The name of the law of @p label (Materials/Material law).
+    const std::string &
+    law_name(const Label label) const;
     double
     density(const Label label) const;
     double
@@ -103,8 +47,9 @@ namespace RestShape
   private:
     struct Entry
     {
-      CorotationalLaw law;
-      double          E, rho;
+      std::shared_ptr<const MaterialLaw> law;
+      std::string                        law_name;
+      double                             E, rho;
     };
     std::map<Label, Entry> entries;
   };
