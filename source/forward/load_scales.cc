@@ -120,11 +120,12 @@ namespace RestShape
       {
         std::snprintf(buffer,
                       sizeof(buffer),
-                      "the loads strain the body by about %.3g (%s): a "
+                      "the loads strain the body by about %.3g (%s): the "
                       "co-rotational law inverts cells at strains of order "
-                      "one; check the units (Young's modulus in Pa, density "
-                      "in kg/m^3, Mesh/Length unit) or buoy the body "
-                      "(Loads/Fluid density)",
+                      "one (Materials/Material law = neo-Hookean or Ogden "
+                      "resist them); check the units (Young's modulus in "
+                      "Pa, density in kg/m^3, Mesh/Length unit) or buoy the "
+                      "body (Loads/Fluid density)",
                       strain,
                       gravity_strain >= pressure_strain ? "rho g H / E" :
                                                           "p / E");
