@@ -1,5 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <restshape/forward/ln_j_terms.h>
 #include <restshape/forward/ogden_law.h>
 
 #include <array>
@@ -72,12 +73,15 @@ namespace RestShape
         sum_powers += std::pow(s.c[a], alpha / 2);
       }
     const double h = lambda * ln_J - 2 * mu / alpha;
-    P              = F * S1 + h * transpose(F_inv);
+    P              = F * S1;
     if (energy != nullptr)
       *energy = 2 * mu / (alpha * alpha) * (sum_powers - 3 - alpha * ln_J) +
                 0.5 * lambda * ln_J * ln_J;
     if (tangent == nullptr)
-      return true;
+      {
+        add_ln_J_terms(F_inv, lambda, h, P, nullptr);
+        return true;
+      }
 
     // Divided differences of phi over the eigenvalues of C.
     Tensor2 D;
@@ -95,8 +99,7 @@ namespace RestShape
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int i = 0; i < 3; ++i)
         N[i][a] = s.n[a][i];
-    const Tensor2 F_inv_T = transpose(F_inv);
-    Tensor4      &A       = *tangent;
+    Tensor4 &A = *tangent;
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int L = 0; L < 3; ++L)
         {
@@ -117,10 +120,9 @@ namespace RestShape
             dP[k][J_] += S1[L][J_];
           for (unsigned int i = 0; i < 3; ++i)
             for (unsigned int J_ = 0; J_ < 3; ++J_)
-              A[i][J_][k][L] = dP[i][J_] +
-                               lambda * F_inv_T[i][J_] * F_inv_T[k][L] -
-                               h * F_inv[J_][k] * F_inv[L][i];
+              A[i][J_][k][L] = dP[i][J_];
         }
+    add_ln_J_terms(F_inv, lambda, h, P, tangent);
     if (type == TangentType::projected)
       project_negative_eigenvalues(A);
     return true;
