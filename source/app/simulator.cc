@@ -262,20 +262,23 @@ namespace RestShape
     // From here on the directory holds this run's results only: the
     // previous run's are removed, and summary.json says that this run has
     // not finished until it has (and what stopped it, if it is
-    // interrupted).
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      remove_previous_results(parameters.output.directory);
+    // interrupted). An interruption waits until both hold.
     const std::string unfinished =
       "{\n  \"converged\": false,\n  \"restshape_version\": \"" +
       std::string(version()) + "\",\n  \"git_revision\": \"" + git_revision() +
       "\",";
-    output->write_text("summary.json", [&](std::ostream &out) {
-      out << unfinished
-          << "\n  \"failure\": \"the run has not finished (it is running, "
-             "or it was killed)\"\n}\n";
-    });
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      set_interrupted_summary(output->path("summary.json"), unfinished);
+    {
+      const InterruptionsDeferred previous_or_new;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        remove_previous_results(parameters.output.directory);
+      output->write_text("summary.json", [&](std::ostream &out) {
+        out << unfinished
+            << "\n  \"failure\": \"the run has not finished (it is running, "
+               "or it was killed)\"\n}\n";
+      });
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        set_interrupted_summary(output->path("summary.json"), unfinished);
+    }
     output->write_text("parameters.prm", [&](std::ostream &out) {
       out << "# The effective parameters of a run of "
           << version_text("restshape") << "\n";

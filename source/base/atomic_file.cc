@@ -137,6 +137,7 @@ namespace RestShape
   void
   StagedFiles::commit(const std::string &parameter)
   {
+    const InterruptionsDeferred all_or_none;
     for (const auto &[staged, path] : files)
       if (std::rename(staged.c_str(), path.c_str()) != 0)
         throw InputError(path,

@@ -36,6 +36,11 @@ namespace RestShape
 
     constexpr int signals[3] = {SIGINT, SIGTERM, SIGHUP};
 
+    /// Sections during which an interruption waits (see
+    /// InterruptionsDeferred), and the signal that arrived meanwhile.
+    std::atomic<int> deferring{0};
+    std::atomic<int> pending_signal{0};
+
     int
     signal_index(const int sig)
     {
@@ -58,8 +63,8 @@ namespace RestShape
         }
     }
 
-    extern "C" void
-    on_interrupt(const int sig)
+    void
+    leave_consistent_and_exit(const int sig)
     {
       for (Slot &slot : temporaries)
         if (slot.state.load() == 2)
@@ -77,6 +82,20 @@ namespace RestShape
             }
         }
       ::_exit(128 + sig);
+    }
+
+    extern "C" void
+    on_interrupt(const int sig)
+    {
+      if (deferring.load() > 0)
+        {
+          pending_signal = sig;
+          // The section may have ended between the test and the store:
+          // then nobody else will see the signal.
+          if (deferring.load() > 0)
+            return;
+        }
+      leave_consistent_and_exit(sig);
     }
 
     bool
@@ -100,6 +119,18 @@ namespace RestShape
       sigaddset(&action.sa_mask, sig);
     for (const int sig : signals)
       sigaction(sig, &action, nullptr);
+  }
+
+  InterruptionsDeferred::InterruptionsDeferred()
+  {
+    ++deferring;
+  }
+
+  InterruptionsDeferred::~InterruptionsDeferred()
+  {
+    if (--deferring == 0)
+      if (const int sig = pending_signal.exchange(0); sig != 0)
+        leave_consistent_and_exit(sig);
   }
 
   void

@@ -18,6 +18,24 @@ namespace RestShape
   install_interrupt_handlers();
 
   /**
+   * A section that an interruption does not cut: a signal that arrives
+   * while one exists is acted on (as install_interrupt_handlers() says)
+   * when the last one ends. For the moves between two consistent states of
+   * an output directory (the previous result removed and the new run's
+   * summary written; staged files renamed into place), whichever thread
+   * the signal is delivered to.
+   */
+  class InterruptionsDeferred
+  {
+  public:
+    InterruptionsDeferred();
+    ~InterruptionsDeferred();
+    InterruptionsDeferred(const InterruptionsDeferred &) = delete;
+    InterruptionsDeferred &
+    operator=(const InterruptionsDeferred &) = delete;
+  };
+
+  /**
    * On an interruption, write @p json_before_failure followed by
    * `"failure": "interrupted by SIGTERM (signal 15)"` and `}` to
    * @p summary_path (through a temporary file and a rename).
