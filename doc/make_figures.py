@@ -1,9 +1,16 @@
 #!/usr/bin/env python3
 # Figures of doc/brain.md from the outputs of prm/brain.prm and
 # prm/brain_paper_method.prm (run both first). Debian packages:
-# python3-vtk9, python3-matplotlib, xvfb. Run from the repository root:
+# python3-vtk9, python3-matplotlib (the iteration plot only), xvfb. Run from the repository root:
 #
 #   xvfb-run -a python3 doc/make_figures.py
+#
+# With the argument `scenarios`, only doc/figures/brain_scenarios.png, from
+# two scenarios of prm/brain.prm (doc/scenarios.md):
+#
+#   build/restshape prm/brain_shift_prone.prm
+#   build/restshape prm/brain_shift_drained.prm
+#   xvfb-run -a python3 doc/make_figures.py scenarios
 #
 # Writes doc/figures/brain_shapes.png (target, rest and equilibrium surfaces,
 # lateral view from the left), doc/figures/brain_error.png (the error
@@ -23,9 +30,6 @@ import sys
 import glob
 import os
 
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.pyplot as plt
 import numpy
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy, numpy_to_vtk
@@ -47,12 +51,14 @@ def vtus(directory):
 
 def surface_at(grid, positions, scalars=None, values=None):
     """The outer surface of grid, its points moved to the point field
-    `positions` (mm), with the point field `values` as `scalars`."""
+    `positions` (mm; None: where they are), with the point field `values`
+    as `scalars`."""
     copy = vtk.vtkUnstructuredGrid()
     copy.DeepCopy(grid)
-    points = vtk.vtkPoints()
-    points.SetData(numpy_to_vtk(vtk_to_numpy(grid.GetPointData().GetArray(positions)).copy(), deep=1))
-    copy.SetPoints(points)
+    if positions is not None:
+        points = vtk.vtkPoints()
+        points.SetData(numpy_to_vtk(vtk_to_numpy(grid.GetPointData().GetArray(positions)).copy(), deep=1))
+        copy.SetPoints(points)
     if scalars is not None:
         array = numpy_to_vtk(values.copy(), deep=1)
         array.SetName(scalars)
@@ -231,12 +237,36 @@ def tracts(heterogeneous, uniform):
     print('wrote doc/figures/brain_tracts.png')
 
 
+def scenarios(prone, drained):
+    """The pre-stressed brain's shift in two scenarios, and where the
+    stress-free model differs in the second, on the deformed surface."""
+    a = read_vtu(os.path.join(prone, 'scenario.vtu'))
+    b = read_vtu(os.path.join(drained, 'scenario.vtu'))
+    shift_a = magnitude(a, 'prestressed_shift_mm')
+    shift_b = magnitude(b, 'prestressed_shift_mm')
+    diff_b = magnitude(b, 'stress_free_shift_mm', 'prestressed_shift_mm')
+    render_panels([('supine to prone: shift, max %.2f mm' % shift_a.max(),
+                    surface_at(a, None, 's', shift_a), 's', shift_a.max()),
+                   ('drained above y = 20 mm: shift, max %.2f mm' % shift_b.max(),
+                    surface_at(b, None, 't', shift_b), 't', shift_b.max()),
+                   ('drained: |stress-free - pre-stressed|, max %.2f mm' % diff_b.max(),
+                    surface_at(b, None, 'd', diff_b), 'd', diff_b.max())],
+                  'doc/figures/brain_scenarios.png')
+    print('wrote doc/figures/brain_scenarios.png')
+
+
 os.makedirs('doc/figures', exist_ok=True)
+if sys.argv[1:] == ['scenarios']:
+    scenarios('output/brain_shift_prone', 'output/brain_shift_drained')
+    raise SystemExit(0)
 if sys.argv[1:] == ['tracts']:
     tracts('output/brain_tracts', 'output/brain_tracts_uniform')
     raise SystemExit(0)
 shapes('output/brain')
 errors('output/brain', 'output/brain_paper_method')
+import matplotlib  # noqa: E402 (only the iteration plot needs it)
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt  # noqa: E402
 plt.figure(figsize=(6.5, 4))
 for directory, label, style in (('output/brain', 'RestShape (Anderson, consistent, P1)', '-o'),
                                 ('output/brain_paper_method', "paper's method (plain, warped, P1)", '--s')):

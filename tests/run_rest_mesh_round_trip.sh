@@ -17,7 +17,7 @@ mkdir -p "$out"
 "$exe" "$@" --set "Output/Directory=$out/inverse" "$scene" >"$out/inverse.log" 2>&1 ||
   { echo "inverse run failed"; tail "$out/inverse.log"; exit 1; }
 "$exe" "$@" --set "Inverse problem/Enabled=false" \
-  --set "Prestress comparison/Enabled=false" \
+  --set "Scenario/Enabled=false" \
   --set "Mesh/File=$out/inverse/rest_shape.msh" \
   --set "Output/Directory=$out/forward" "$scene" >"$out/forward.log" 2>&1 ||
   { echo "forward run from rest_shape.msh failed"; tail "$out/forward.log"; exit 1; }

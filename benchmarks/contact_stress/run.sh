@@ -79,7 +79,7 @@ for p in $degrees; do
       start=$(date +%s.%N)
       timeout "$limit" "$exe" --set "Output/Directory=$dir" \
         --set "Inverse problem/Enabled=false" \
-        --set "Prestress comparison/Enabled=false" \
+        --set "Scenario/Enabled=false" \
         --set "Loads/Surface pressure=0" \
         --set "Loads/Fluid density=$fluid" \
         --set "Loads/Gravity=$(gravity "$load")" \

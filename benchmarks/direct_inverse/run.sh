@@ -36,7 +36,7 @@ status=0
 for entry in "${scenes[@]}"; do
   name=${entry%%:*}
   prm=${entry#*:}
-  sets=(--set "Prestress comparison/Enabled=false")
+  sets=(--set "Scenario/Enabled=false")
   [ "$name" = column ] && sets+=(--set "Adaptive refinement/Cycles=0")
   for method in "fixed point" direct; do
     dir=$out/${name}_${method// /_}

@@ -54,7 +54,7 @@ run() { # directory mesh degree solver inverse method
     --set "Mesh/Global refinements=$refinements" \
     --set "Discretization/Polynomial degree=$3" --set "Solver/Linear solver=$4" \
     --set "Inverse problem/Enabled=$5" --set "Inverse problem/Method=$6" \
-    --set "Prestress comparison/Enabled=false" --set "Output/Write VTU=false" \
+    --set "Scenario/Enabled=false" --set "Output/Write VTU=false" \
     prm/brain.prm >"$1.log" 2>&1
 }
 

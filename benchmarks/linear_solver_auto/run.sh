@@ -26,7 +26,7 @@ for r in $levels; do
   for solver in direct cg-amg; do
     dir=$out/${r}_$solver
     /usr/bin/time -f "%M" -o "$dir.mem" "$exe" --set "Inverse problem/Enabled=false" \
-      --set "Contact/Obstacle file=" --set "Prestress comparison/Enabled=false" \
+      --set "Contact/Obstacle file=" --set "Scenario/Enabled=false" \
       --set "Output/Write VTU=false" --set "Mesh/Global refinements=$r" \
       --set "Solver/Linear solver=$solver" --set "Output/Directory=$dir" \
       prm/brain.prm >"$dir.log" 2>&1 || status=1

@@ -53,7 +53,7 @@ run() { # name ranks mesh[+refinements] degree inverse [threads]
   # sum: each rank appends its own peak (kB) to $dir.rss.
   "${launch[@]}" /usr/bin/time -f "%M" -a -o "$dir.rss" "$exe" --set "Output/Directory=$dir" \
     --set "Mesh/File=${3%+*}" --set "Mesh/Global refinements=$refinements" --set "Discretization/Polynomial degree=$4" \
-    --set "Inverse problem/Enabled=$5" --set "Prestress comparison/Enabled=false" \
+    --set "Inverse problem/Enabled=$5" --set "Scenario/Enabled=false" \
     --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" \
     ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1 || { echo "| $1 | failed: $(tail -n 1 "$dir.log") |"; return 1; }
   local s=$dir/summary.json

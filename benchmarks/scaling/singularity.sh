@@ -41,7 +41,7 @@ for level in $levels; do
   rm -rf "$dir"
   if ! "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" \
     --set "Mesh/Global refinements=$refinements" --set "Contact/Obstacle file=" \
-    --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
+    --set "Inverse problem/Enabled=false" --set "Scenario/Enabled=false" \
     --set "Solver/Linear solver=cg-amg" prm/brain.prm >"$dir.log" 2>&1; then
     echo "| $level | failed: $(tail -n 1 "$dir.log") |"
     status=1

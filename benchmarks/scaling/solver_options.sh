@@ -82,7 +82,7 @@ for c in $cases; do
     dir=$out/${c}_$variant
     rm -rf "$dir"
     if ! /usr/bin/time -f %M -o "$dir.rss" "$exe" --set "Output/Directory=$dir" --set "Mesh/File=$mesh" --set "Mesh/Global refinements=$refinements" \
-      --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
+      --set "Inverse problem/Enabled=false" --set "Scenario/Enabled=false" \
       --set "Output/Write VTU=false" --set "Solver/Linear solver=cg-amg" --set "Solver/Inexact Newton=$inexact" \
       --set "Solver/AMG update=$update" --set "Solver/AMG aggregation threshold=$threshold" \
       --set "Solver/AMG prolongator=$prolongator" ${SET:+--set "$SET"} prm/brain.prm >"$dir.log" 2>&1; then

@@ -36,7 +36,7 @@ for variant in full no_vtu no_skull no_pressure; do
   dir=$out/$variant
   rm -rf "$dir"
   if ! "$exe" --set "Output/Directory=$dir" --set "Inverse problem/Enabled=$inverse" \
-    --set "Prestress comparison/Enabled=false" "${set[@]}" prm/brain.prm >"$dir.log" 2>&1; then
+    --set "Scenario/Enabled=false" "${set[@]}" prm/brain.prm >"$dir.log" 2>&1; then
     echo "| $variant | failed: $(tail -n 1 "$dir.log") |"
     status=1
     continue

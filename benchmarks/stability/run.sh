@@ -62,7 +62,7 @@ for p in $degrees; do
           --set "Materials/Young's modulus=1:1500, 2:$e_tumour, 3:1500, 4:1500" \
           --set "Loads/Gravity=0, $gy, 0" \
           --set "Discretization/Polynomial degree=$p" \
-          --set "Prestress comparison/Enabled=false" \
+          --set "Scenario/Enabled=false" \
           --set "Output/Write VTU=false" ${SET:+--set "$SET"} \
           prm/brain.prm >"$out/nu${nu}_c${c}_g${g}_p${p}.log" 2>&1
         code=$?

@@ -59,7 +59,7 @@ run() { # element:level
   fi
   rm -rf "$dir"
   "$exe" --set "Output/Directory=$dir" --set "Output/Write VTU=false" --set "Output/Write nodal CSV=true" \
-    --set "Inverse problem/Enabled=false" --set "Prestress comparison/Enabled=false" \
+    --set "Inverse problem/Enabled=false" --set "Scenario/Enabled=false" \
     --set "Solver/Linear solver=cg-amg" --set "Mesh/Cell type=$cells" \
     --set "Discretization/Polynomial degree=${element:1:1}" --set "Mesh/File=$mesh" "${refine[@]}" \
     "${extra[@]}" prm/brain.prm >"$dir.log" 2>&1 ||

@@ -1,6 +1,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <restshape/app/run_size.h>
+#include <restshape/app/scenario.h>
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
@@ -122,8 +123,8 @@ namespace RestShape
         forward->release_linear_solver();
         postprocess(cycle, stats);
       }
-    if (parameters.prestress_comparison.enabled)
-      compare_prestress();
+    if (parameters.scenario.enabled)
+      run_scenario();
     write_summary(stats);
     timer.print_summary();
   }
@@ -539,73 +540,17 @@ namespace RestShape
   }
 
   void
-  Simulator::compare_prestress()
+  Simulator::run_scenario()
   {
-    // Table 1 of Morin et al.: the same extra force field on (1) the
-    // pre-stressed model (from its equilibrium under the scene's loads) and
-    // (2) the model stress-free in the mesh geometry (no other load).
-    const VectorType d_eq   = forward->owned_copy(forward->displacement());
-    const VectorType w_rest = forward->owned_copy(forward->rest_displacement());
-    const LoadState  scene  = forward->scene_load();
-    const Tensor<1, 3> extra =
-      parameters.prestress_comparison.extra_acceleration;
-    pcout << "Prestress comparison: extra body force " << extra << " m/s^2"
-          << std::endl;
-    LoadState loaded = scene;
-    loaded.acceleration += extra;
-    const auto check = [this](const SolveStatistics &stats,
-                              const std::string     &model) {
-      if (stats.converged)
-        return;
-      SolveStatistics failed = stats;
-      failed.failure =
-        "prestress comparison, " + model + " model: " + stats.failure;
-      write_summary(failed);
-      throw SolverFailure("the " + failed.failure);
-    };
-    const SolveStatistics s1 = forward->solve(loaded, w_rest);
-    check(s1, "pre-stressed");
-    VectorType u1 = forward->zero_vector();
-    u1            = forward->displacement();
-    u1 -= d_eq;
-    const auto prestressed = forward->nodal_norms(u1);
-
-    LoadState extra_only;
-    extra_only.acceleration = extra;
-    const SolveStatistics s2 =
-      forward->solve_from(nullptr, extra_only, forward->zero_vector());
-    check(s2, "not pre-stressed");
-    const auto unstressed = forward->nodal_norms(forward->displacement());
-
-    const auto increase = [](double a, double b) { return 100. * (b - a) / a; };
-    output->write_text("prestress_comparison.csv", [&](std::ostream &out) {
-      out
-        << std::setprecision(6)
-        << "model,mean_displacement_mm,max_displacement_mm,newton_iterations,converged\n"
-        << "prestressed," << prestressed.first * mm_per_m << ','
-        << prestressed.second * mm_per_m << ',' << s1.newton_iterations << ','
-        << s1.converged << '\n'
-        << "not_prestressed," << unstressed.first * mm_per_m << ','
-        << unstressed.second * mm_per_m << ',' << s2.newton_iterations << ','
-        << s2.converged << '\n'
-        << "increase_percent," << increase(prestressed.first, unstressed.first)
-        << ',' << increase(prestressed.second, unstressed.second) << ",,\n";
-    });
-    summary.set("prestressed_mean_displacement_mm",
-                prestressed.first * mm_per_m);
-    summary.set("prestressed_max_displacement_mm",
-                prestressed.second * mm_per_m);
-    summary.set("not_prestressed_mean_displacement_mm",
-                unstressed.first * mm_per_m);
-    summary.set("not_prestressed_max_displacement_mm",
-                unstressed.second * mm_per_m);
-    pcout << "  pre-stressed: mean " << prestressed.first * mm_per_m
-          << " mm, max " << prestressed.second * mm_per_m
-          << " mm; not pre-stressed: mean " << unstressed.first * mm_per_m
-          << " mm, max " << unstressed.second * mm_per_m << " mm ("
-          << std::showpos << increase(prestressed.first, unstressed.first)
-          << " % / " << increase(prestressed.second, unstressed.second) << " %)"
-          << std::noshowpos << std::endl;
+    Scenario scenario(
+      parameters, *forward, contact.get(), *output, summary, pcout);
+    scenario.run(
+      [this](const SolveStatistics &stats, const std::string &model) {
+        SolveStatistics failed = stats;
+        failed.failure = "scenario, " + model + " model: " + stats.failure;
+        write_summary(failed);
+        throw SolverFailure("the " + failed.failure);
+      });
   }
 
 } // namespace RestShape

@@ -1,5 +1,6 @@
 // The checks of a scene before and after its mesh is made: labels,
 // supports, pieces, obstacle placement, load scales.
+#include <restshape/app/scenario.h>
 #include <restshape/app/simulator.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/units.h>
@@ -42,6 +43,15 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
+    if (parameters.scenario.enabled)
+      try
+        {
+          check_scenario(parameters, *mesh, comm);
+        }
+      catch (const InputError &e)
+        {
+          throw e.in_file(prm_file);
+        }
     if (forward && parameters.solver.check_stability == StabilityCheck::on &&
         !forward->tangent_is_symmetric())
       throw InputError(

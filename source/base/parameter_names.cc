@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace RestShape
@@ -152,6 +153,14 @@ namespace RestShape
                                const std::set<std::string> &known) const
   {
     const std::string text = "unknown " + kind + " '" + path + "'";
+    // Names that an earlier version had, and what replaced them.
+    static const std::map<std::string, std::string> renamed = {
+      {"Prestress comparison",
+       "replaced by 'Scenario' (doc/scenarios.md; 'Extra body force' is "
+       "now 'Tissue body force', not buoyed)"}};
+    for (const auto &[old_name, replacement] : renamed)
+      if (path == old_name || path.rfind(old_name + "/", 0) == 0)
+        return text + ": " + replacement;
     const std::string near = did_you_mean(nearest_names(path, known));
     return text + (near.empty() ? "; see restshape --print-parameters" : near);
   }

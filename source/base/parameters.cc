@@ -516,7 +516,7 @@ namespace RestShape
     RefinementParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     InverseParameters::declare_parameters(prm);
-    PrestressComparisonParameters::declare_parameters(prm);
+    ScenarioParameters::declare_parameters(prm);
   }
 
   void
@@ -533,9 +533,10 @@ namespace RestShape
     refinement.parse_parameters(prm);
     contact.parse_parameters(prm);
     inverse.parse_parameters(prm);
-    prestress_comparison.parse_parameters(prm);
-    // The fluid level is given in the mesh's length unit.
+    scenario.parse_parameters(prm);
+    // The fluid levels are given in the mesh's length unit.
     loads.fluid_level *= mesh.length_unit;
+    scenario.fluid_level *= mesh.length_unit;
     for (const LabelListEntry &e : label_list_entries)
       {
         prm.enter_subsection(e.section);
@@ -543,11 +544,25 @@ namespace RestShape
           {e.section + "/" + e.entry, prm.get(e.entry), e.values});
         prm.leave_subsection();
       }
-    if (prestress_comparison.enabled && !inverse.enabled)
+    if (scenario.enabled && !inverse.enabled)
       throw InputError("",
-                       "Prestress comparison/Enabled",
-                       "the comparison needs the pre-stressed model: set "
+                       "Scenario/Enabled",
+                       "a scenario starts from the pre-stressed model: set "
                        "Inverse problem/Enabled = true");
+    const bool moves_fluid =
+      scenario.has_fluid_level || scenario.rotation_degrees.norm_square() > 0;
+    if (scenario.enabled && moves_fluid && loads.hydrostatic)
+      throw InputError("",
+                       scenario.has_fluid_level ? "Scenario/Fluid level" :
+                                                  "Scenario/Gravity rotation",
+                       "not available with Loads/Fluid load = hydrostatic "
+                       "pressure yet; expected Fluid load = buoyancy");
+    if (scenario.enabled && scenario.has_fluid_level &&
+        loads.fluid_density == 0)
+      throw InputError("",
+                       "Scenario/Fluid level",
+                       "there is no fluid to drain: expected Loads/Fluid "
+                       "density > 0 in kg/m^3");
   }
 
   void

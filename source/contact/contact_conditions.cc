@@ -4,12 +4,14 @@
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/mpi_reductions.h>
 #include <restshape/base/units.h>
 #include <restshape/contact/contact.h>
 
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <tuple>
 
 namespace RestShape
 {
@@ -34,17 +36,8 @@ namespace RestShape
     void
     reduce(Violation &v, const MPI_Comm comm)
     {
-      const std::vector<double> mine = {v.worst,
-                                        v.where[0],
-                                        v.where[1],
-                                        v.where[2]};
-      for (const auto &r : Utilities::MPI::all_gather(comm, mine))
-        if (r[0] > v.worst)
-          {
-            v.worst = r[0];
-            v.where = Point<3>(r[1], r[2], r[3]);
-          }
-      v.nodes = Utilities::MPI::sum(v.nodes, comm);
+      std::tie(v.worst, v.where) = largest_with_place(v.worst, v.where, comm);
+      v.nodes                    = Utilities::MPI::sum(v.nodes, comm);
     }
 
   } // namespace

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <set>
 
 namespace RestShape
 {
@@ -166,6 +168,41 @@ namespace RestShape
     const MPI_Comm comm = communicator();
     for (unsigned int k = 0; k < 3; ++k)
       force[k] = Utilities::MPI::sum(force[k], comm);
+    return force;
+  }
+
+  std::map<Label, Tensor<1, 3>>
+  ContactProblem::force_by_label(const VectorType &raw_residual) const
+  {
+    // The labels of the cells around each active node (by its x DoF).
+    std::map<types::global_dof_index, std::set<Label>> labels;
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        labels[c.node.dofs[0]];
+    std::vector<types::global_dof_index> dofs(forward.fe().n_dofs_per_cell());
+    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            if (const auto it = labels.find(dof); it != labels.end())
+              it->second.insert(cell->material_id());
+        }
+    std::map<Label, Tensor<1, 3>> force;
+    for (const Label label : forward.mesh().labels())
+      force[label];
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const std::set<Label> &around = labels[c.node.dofs[0]];
+          const Tensor<1, 3>     f      = reaction(c, raw_residual);
+          for (const Label label : around)
+            force[label] += f / double(around.size());
+        }
+    const MPI_Comm comm = communicator();
+    for (auto &[label, f] : force)
+      for (unsigned int k = 0; k < 3; ++k)
+        f[k] = Utilities::MPI::sum(f[k], comm);
     return force;
   }
 

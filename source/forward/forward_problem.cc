@@ -186,66 +186,6 @@ namespace RestShape
     return chosen;
   }
 
-  void
-  ForwardProblem::setup_surface_load()
-  {
-    const LoadParameters &loads = parameters.loads;
-    // The pressure faces' quadrature points (mesh geometry) and their
-    // heights against gravity.
-    const Tensor<1, 3>    up      = -loads.gravity;
-    double                highest = -std::numeric_limits<double>::max();
-    Point<3>              top;
-    std::vector<Point<3>> points;
-    FEFaceValues<3>       fv(*mapping_,
-                       fe_,
-                       face_quadrature_,
-                       update_quadrature_points);
-    for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
-      fv.reinit(cell, f);
-      for (const Point<3> &x : fv.get_quadrature_points())
-        {
-          points.push_back(x);
-          if (up * x > highest)
-            {
-              highest = up * x;
-              top     = x;
-            }
-        }
-    });
-    // The highest point over all ranks.
-    const std::vector<double> mine = {highest, top[0], top[1], top[2]};
-    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
-      if (r[0] > highest)
-        {
-          highest = r[0];
-          top     = Point<3>(r[1], r[2], r[3]);
-        }
-    const Point<3> level = loads.has_fluid_level ? loads.fluid_level : top;
-    surface_load_        = std::make_unique<SurfaceLoad>(loads, level);
-
-    if (loads.hydrostatic && loads.has_fluid_level && up.norm() > 0)
-      {
-        // The deepest pressure-face point below the level (m; < 0: above).
-        double deepest = -std::numeric_limits<double>::max();
-        for (const Point<3> &x : points)
-          deepest = std::max(deepest, -(up * (x - level)) / up.norm());
-        deepest = Utilities::MPI::max(deepest, comm);
-        if (!(deepest > 0))
-          throw InputError(
-            "",
-            "Loads/Fluid level",
-            "no pressure face lies below the fluid level (the lowest face "
-            "point is " +
-              number_text(-deepest / parameters.mesh.length_unit) +
-              " mesh units above it): the fluid wets nothing; expected a "
-              "level above some of the pressure faces");
-      }
-    const bool pressure_acts =
-      loads.pressure != 0 || (loads.hydrostatic && loads.gravity.norm() > 0);
-    symmetric_tangent = !(loads.follower && pressure_acts) ||
-                        pressure_surface_is_closed_or_held();
-  }
-
   bool
   ForwardProblem::is_held(const types::global_dof_index dof) const
   {
@@ -259,62 +199,6 @@ namespace RestShape
            std::all_of(entries->begin(), entries->end(), [this](const auto &e) {
              return is_fixed(e.first);
            });
-  }
-
-  bool
-  ForwardProblem::pressure_surface_is_closed_or_held() const
-  {
-    // Edges (vertex pairs) of the pressure faces of owned and ghost cells,
-    // with the number of pressure faces that share them: an edge of only
-    // one is an edge of the loaded surface.
-    // With hanging nodes, a coarse face's edge is refined on its finer
-    // neighbour's side: its halves are the edges that count.
-    std::map<std::pair<unsigned int, unsigned int>, unsigned int> count;
-    const auto key = [](const auto &line) {
-      const unsigned int a = line->vertex_index(0), b = line->vertex_index(1);
-      return std::make_pair(std::min(a, b), std::max(a, b));
-    };
-    const auto for_each_edge = [](const auto &face, const auto &f) {
-      for (unsigned int l = 0; l < face->n_lines(); ++l)
-        {
-          const auto line = face->line(l);
-          if (line->has_children())
-            for (unsigned int c = 0; c < line->n_children(); ++c)
-              f(line->child(c));
-          else
-            f(line);
-        }
-    };
-    for_each_boundary_face(
-      pressure_labels,
-      [&](const auto &cell, auto f) {
-        for_each_edge(cell->face(f),
-                      [&](const auto &line) { ++count[key(line)]; });
-      },
-      true);
-    bool                                 held = true;
-    std::vector<types::global_dof_index> dofs;
-    for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
-      for_each_edge(cell->face(f), [&](const auto &line) {
-        if (count[key(line)] != 1)
-          return;
-        dofs.resize(fe_.n_dofs_per_line() + 2 * fe_.n_dofs_per_vertex());
-        line->get_dof_indices(dofs);
-        for (const auto dof : dofs)
-          held = held && is_held(dof);
-      });
-    });
-    return Utilities::MPI::min(held ? 1 : 0, comm) == 1;
-  }
-
-  double
-  ForwardProblem::effective_density(const CellAccessor<3, 3> &cell) const
-  {
-    const Label label = cell.material_id();
-    return labelled_mesh.mass_ratio(cell) *
-           (material_table.density(label) - (parameters.loads.hydrostatic ?
-                                               0. :
-                                               parameters.loads.fluid_density));
   }
 
   void
@@ -431,15 +315,6 @@ namespace RestShape
     linear_solver->set_rigid_body_modes(std::move(modes));
   }
 
-
-  LoadState
-  ForwardProblem::scene_load() const
-  {
-    LoadState load;
-    load.acceleration = parameters.loads.gravity;
-    load.pressure     = parameters.loads.pressure;
-    return load;
-  }
 
   // ------------------------------------------------------------------
   // State and queries

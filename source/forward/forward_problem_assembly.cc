@@ -23,7 +23,8 @@ namespace RestShape
       : fe_values(mapping,
                   fe,
                   quadrature,
-                  update_values | update_gradients | update_JxW_values)
+                  update_values | update_gradients | update_JxW_values |
+                    update_quadrature_points)
       , fe_face_values(mapping,
                        fe,
                        face_quadrature,
@@ -111,8 +112,9 @@ namespace RestShape
     const MaterialLaw &law   = material_table.law(label);
     // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
     // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
-    const Tensor<1, 3> body_force =
-      effective_density(*cell) * current_load.acceleration;
+    const bool         varies = body_force_varies(current_load);
+    const Tensor<1, 3> cell_body_force =
+      body_force(*cell, cell->center(), current_load);
     const Tensor2 I = unit_symmetric_tensor<3>();
 
     Tensor2 P;
@@ -134,16 +136,19 @@ namespace RestShape
             copy.label  = label;
             return;
           }
-        const double JxW     = fe_values.JxW(q);
-        const double dV_rest = det_G * JxW;
+        const double       JxW     = fe_values.JxW(q);
+        const double       dV_rest = det_G * JxW;
+        const Tensor<1, 3> f_body =
+          varies ?
+            body_force(*cell, fe_values.quadrature_point(q), current_load) :
+            cell_body_force;
         copy.energy += W * dV_rest;
         const Tensor2 G_inv_T = transpose(G_inv);
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
             const unsigned int ci = fe_.system_to_component_index(i).first;
             scratch.b[i]          = G_inv_T * fe_values.shape_grad(i, q);
-            const double f_ext =
-              fe_values.shape_value(i, q) * body_force[ci] * JxW;
+            const double f_ext = fe_values.shape_value(i, q) * f_body[ci] * JxW;
             const double f_int = (P[ci] * scratch.b[i]) * dV_rest;
             copy.cell_external(i) += f_ext;
             copy.cell_rhs(i) += f_ext - f_int;

@@ -1,4 +1,4 @@
-// The parameters of subsections Inverse problem and Prestress comparison.
+// The parameters of subsection Inverse problem.
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
@@ -116,35 +116,4 @@ namespace RestShape
                        "expected a positive tolerance in mm");
   }
 
-  void
-  PrestressComparisonParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Prestress comparison");
-    prm.declare_entry("Enabled",
-                      "false",
-                      Patterns::Bool(),
-                      "After the inverse problem, apply the same extra body "
-                      "force to (1) the pre-stressed model (its equilibrium "
-                      "under the scene's loads) and (2) the model that "
-                      "starts stress-free from the mesh geometry (no other "
-                      "load), as in Table 1 of Morin et al. 2015; write mean "
-                      "and max displacement of each to "
-                      "prestress_comparison.csv.");
-    prm.declare_entry("Extra body force",
-                      "0, 9.81, 0",
-                      Patterns::Anything(),
-                      "The extra acceleration field in m/s^2 ('x, y, z'), "
-                      "added to gravity for model (1).");
-    prm.leave_subsection();
-  }
-
-  void
-  PrestressComparisonParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Prestress comparison");
-    enabled            = prm.get_bool("Enabled");
-    extra_acceleration = parse_vector(prm.get("Extra body force"),
-                                      "Prestress comparison/Extra body force");
-    prm.leave_subsection();
-  }
 } // namespace RestShape

@@ -106,9 +106,9 @@ namespace RestShape
     namespace fs = std::filesystem;
     static const std::regex ours(
       "summary\\.json|parameters\\.prm|solution\\.(pvd|visit)|"
-      "(solution-[0-9]+|prestressed_state)(\\.[0-9]+)?\\.(vtu|pvtu)|"
+      "(solution-[0-9]+|prestressed_state|scenario)(\\.[0-9]+)?\\.(vtu|pvtu)|"
       "iterations\\.csv|convergence\\.(csv|txt)|nodes\\.csv|"
-      "rest_shape\\.msh|prestress_comparison\\.csv|label_names\\.txt|"
+      "rest_shape\\.msh|prestress_comparison\\.csv|scenario\\.csv|label_names\\.txt|"
       ".*\\.tmp-[0-9]+");
     std::error_code ec;
     for (const auto &entry : fs::directory_iterator(directory, ec))

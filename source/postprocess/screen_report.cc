@@ -17,6 +17,19 @@ namespace RestShape
                << in.reductions.contact << " N, largest penetration "
                << conditions.max_penetration * mm_per_m << " mm; "
                << conditions.text() << std::endl;
+      if (in.parameters.inverse.enabled && contact.n_active() > 0)
+        {
+          in.pcout << "  Contact at the target, by tissue:";
+          const LabelNames &names = in.mesh.label_names();
+          for (const auto &[label, f] : in.reductions.contact_by_label)
+            if (f.norm() > 0)
+              in.pcout << ' '
+                       << (names.name(label).empty() ?
+                             "label " + std::to_string(label) :
+                             names.name(label))
+                       << " " << f.norm() << " N";
+          in.pcout << std::endl;
+        }
       if (conditions.outside > 0)
         in.pcout << "  Contact: " << conditions.outside
                  << " candidate nodes lie beyond the obstacle (they started "

@@ -8,6 +8,14 @@ namespace RestShape
 
   namespace
   {
+    /// A tissue's name as a JSON key: its label name, else "label_N".
+    std::string
+    tissue_key(const LabelledMesh &mesh, const Label label)
+    {
+      const std::string name = mesh.label_names().name(label);
+      return name.empty() ? "label_" + std::to_string(label) : name;
+    }
+
     /// Contact figures: active set, force, the strict conditions, fixed
     /// planes, adhesion, pressures and the patch.
     void
@@ -17,6 +25,11 @@ namespace RestShape
       Summary              &summary = in.summary;
       summary.set("active_contact_nodes", long(contact.n_active()));
       summary.set("contact_force_N", in.reductions.contact);
+      // What the obstacle carries at the target, tissue by tissue: it
+      // tells which rest shape the inverse problem chose (doc/inverse.md).
+      if (in.parameters.inverse.enabled)
+        for (const auto &[label, f] : in.reductions.contact_by_label)
+          summary.set("contact_force_" + tissue_key(in.mesh, label) + "_N", f);
       summary.set("active_set_iterations",
                   long(in.stats.active_set_changes + 1));
       const ContactConditions &conditions = in.forward.contact_conditions();

@@ -109,8 +109,9 @@ namespace RestShape
     /// stability = false, or a tangent that is not symmetric.
     std::string
     stability_not_checked_because() const;
+    /// Scenario/Enabled: both models under what the scenario changes.
     void
-    compare_prestress();
+    run_scenario();
     void
     postprocess(const unsigned int cycle, const SolveStatistics &stats);
     void

@@ -275,10 +275,20 @@ namespace RestShape
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  struct PrestressComparisonParameters
+  /**
+   * Scenario: what surgery changes after the rest shape (the head turned,
+   * the CSF drained, a force field), applied to the pre-stressed model and
+   * to the model stress-free in the same geometry (source/app/scenario.cc).
+   */
+  struct ScenarioParameters
   {
-    bool                 enabled;
-    dealii::Tensor<1, 3> extra_acceleration; // m/s^2
+    bool                 enabled = false;
+    dealii::Tensor<1, 3> rotation_degrees; // about x, then y, then z
+    bool                 has_fluid_level = false;
+    dealii::Point<3>     fluid_level; // m (given in the mesh's length unit)
+    bool                 has_pressure = false;
+    double               pressure     = 0;    // Pa
+    dealii::Tensor<1, 3> tissue_acceleration; // m/s^2
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -289,18 +299,18 @@ namespace RestShape
   /// All subsections together: what a scene file describes.
   struct Parameters
   {
-    MeshParameters                mesh;
-    DiscretizationParameters      discretization;
-    MaterialParameters            materials;
-    BoundaryParameters            boundary;
-    LoadParameters                loads;
-    SolverParameters              solver;
-    OutputParameters              output;
-    VerificationParameters        verification;
-    RefinementParameters          refinement;
-    ContactParameters             contact;
-    InverseParameters             inverse;
-    PrestressComparisonParameters prestress_comparison;
+    MeshParameters           mesh;
+    DiscretizationParameters discretization;
+    MaterialParameters       materials;
+    BoundaryParameters       boundary;
+    LoadParameters           loads;
+    SolverParameters         solver;
+    OutputParameters         output;
+    VerificationParameters   verification;
+    RefinementParameters     refinement;
+    ContactParameters        contact;
+    InverseParameters        inverse;
+    ScenarioParameters       scenario;
     /// Every parameter that names labels, as written (checked against the
     /// mesh's labels by the Simulator).
     std::vector<LabelList> label_lists;

@@ -13,6 +13,7 @@
 #include <restshape/forward/forward_problem.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -249,6 +250,11 @@ namespace RestShape
     /// Sum of the obstacle's forces on the body (N).
     dealii::Tensor<1, 3>
     total_force(const VectorType &raw_residual) const;
+    /// The same force by label (N, every label of the mesh): an active
+    /// node's force counts for the labels of the cells around it, in equal
+    /// shares; the shares add up to total_force().
+    std::map<Label, dealii::Tensor<1, 3>>
+    force_by_label(const VectorType &raw_residual) const;
     /// Largest penetration (-gap) of an eligible node (m), and of any node.
     double
     max_penetration(const bool eligible_only) const;

@@ -159,6 +159,11 @@ namespace RestShape
     /// The load state of the paper's scene: gravity and the CSF pressure.
     LoadState
     scene_load() const;
+    /// The point of the pressure faces (mesh geometry, m) highest against
+    /// @p acceleration: where the free surface of a fluid that wets them
+    /// all lies.
+    dealii::Point<3>
+    highest_pressure_point(const dealii::Tensor<1, 3> &acceleration) const;
 
     // --- state ---------------------------------------------------------
     /// Equilibrium displacement from the mesh geometry (ghosted, m).
@@ -462,6 +467,18 @@ namespace RestShape
     /// mesh's mass ratio (LabelledMesh::mass_ratio()).
     double
     effective_density(const dealii::CellAccessor<3, 3> &cell) const;
+    /// Whether the body force of @p load varies within a cell (the fluid
+    /// drained above a level that may cross it).
+    bool
+    body_force_varies(const LoadState &load) const;
+    /// The body force per unit mesh volume (N/m^3) of @p load at the point
+    /// @p X of @p cell (mesh geometry): effective_density() times the
+    /// acceleration, plus the tissue acceleration on the full density, plus
+    /// the buoyancy lost where the fluid is drained.
+    dealii::Tensor<1, 3>
+    body_force(const dealii::CellAccessor<3, 3> &cell,
+               const dealii::Point<3>           &X,
+               const LoadState                  &load) const;
     /// The surface pressure on the boundary faces of @p cell: dead
     /// tractions, or the follower load with its tangent and potential.
     void
@@ -633,6 +650,8 @@ namespace RestShape
     std::vector<bool>                   fixed_dof;          // relevant dofs
     std::vector<Node>                   owned_nodes_, relevant_nodes_;
     std::set<Label>                     pressure_labels, support_labels;
+    /// Quadrature points of the pressure faces (mesh geometry, m, owned).
+    std::vector<dealii::Point<3>> pressure_points;
 
     MatrixType tangent;
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,

@@ -30,6 +30,8 @@ namespace RestShape
     /// Forces (N): the loads, the fixed supports' reaction, the obstacle,
     /// the elastic support, and the resultant of the surface loads.
     dealii::Tensor<1, 3> external, reaction, contact, support, surface;
+    /// The obstacle's force by label (ContactProblem::force_by_label()).
+    std::map<Label, dealii::Tensor<1, 3>> contact_by_label;
     /// With an obstacle: active nodes that pull (accepted), and the nodes
     /// on fixed crease planes with their largest distance (m) from it.
     ContactProblem::Adhesion        adhesion;

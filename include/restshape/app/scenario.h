@@ -1,0 +1,92 @@
+// What surgery changes after the rest shape, applied to the pre-stressed
+// model and to the model stress-free in the same geometry.
+#ifndef restshape_app_scenario_h
+#define restshape_app_scenario_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <restshape/base/parameters.h>
+#include <restshape/contact/contact.h>
+#include <restshape/forward/forward_problem.h>
+#include <restshape/io/output.h>
+#include <restshape/mesh/labelled_mesh.h>
+
+#include <functional>
+#include <map>
+
+namespace RestShape
+{
+  /// How a displacement field moves one tissue (one label).
+  struct TissueShift
+  {
+    double               volume = 0;    // m^3, mesh geometry
+    dealii::Tensor<1, 3> centroid;      // mean displacement over the volume
+    double               max_shift = 0; // largest nodal |displacement|, m
+    dealii::Point<3>     max_where;     // that node, mesh geometry
+  };
+
+  /// TissueShift of every label of @p forward's mesh for the field @p u.
+  std::map<Label, TissueShift>
+  tissue_shifts(const ForwardProblem &forward, const VectorType &u);
+
+  /// The scene's load @p scene changed as @p p says: gravity rotated (with
+  /// the buoyancy), the fluid drained above a level, the surface pressure
+  /// set, a tissue body force added.
+  LoadState
+  changed_load(const ScenarioParameters &p, const LoadState &scene);
+
+  /// InputError (without file name) for a scenario that changes nothing it
+  /// says: a fluid level above the whole body (nothing drained).
+  void
+  check_scenario(const Parameters   &parameters,
+                 const LabelledMesh &mesh,
+                 const MPI_Comm      comm);
+
+  /**
+   * Scenario/Enabled: from the pre-stressed model's equilibrium (the
+   * forward problem's current state: displacement d_eq, rest shape w,
+   * contact set C), solve
+   *  (1) the pre-stressed model under the changed load, from d_eq;
+   *  (2) the model stress-free in the geometry X + d_eq (rest shape =
+   *      equilibrium, the same contact set C) under the change of load
+   *      alone (changed - scene), as the paper's Table 1 does;
+   * and report the shift of each from X + d_eq, tissue by tissue.
+   */
+  class Scenario
+  {
+  public:
+    /// @p fail: records a model's failed solve (summary.json) and throws.
+    using Failure =
+      std::function<void(const SolveStatistics &, const std::string &model)>;
+
+    Scenario(const Parameters                 &parameters,
+             ForwardProblem                   &forward,
+             ContactProblem                   *contact,
+             OutputWriter                     &output,
+             Summary                          &summary,
+             const dealii::ConditionalOStream &pcout);
+
+    void
+    run(const Failure &fail);
+
+  private:
+    /// The CSV, the VTU (with the pre-stressed model's @p contact_fields),
+    /// the summary and the screen table.
+    void
+    report(const VectorType &prestressed,
+           const VectorType &stress_free,
+           const VectorType &contact_fields);
+    /// One line that says what the scenario changes.
+    std::string
+    description(const LoadState &scene, const LoadState &changed) const;
+
+    const Parameters                 &parameters;
+    ForwardProblem                   &forward;
+    ContactProblem                   *contact;
+    OutputWriter                     &output;
+    Summary                          &summary;
+    const dealii::ConditionalOStream &pcout;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,357 @@
+// Scenario: the changed load, the two solves and the shift of each tissue.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <restshape/app/scenario.h>
+#include <restshape/base/input_error.h>
+#include <restshape/base/mpi_reductions.h>
+#include <restshape/base/units.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <tuple>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    constexpr double radians_per_degree = M_PI / 180.;
+    constexpr double ml_per_m3          = 1e6;
+    /// Sines and cosines below this are zero.
+    constexpr double round_off = 1e-15;
+
+    /// The rotation by @p degrees about x, then y, then z.
+    Tensor<2, 3>
+    rotation(const Tensor<1, 3> &degrees)
+    {
+      Tensor<2, 3> R = unit_symmetric_tensor<3>();
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        {
+          const double a = degrees[axis] * radians_per_degree;
+          // Exact at multiples of 90 degrees (cos 90 = 6e-17 otherwise).
+          const auto snap = [](const double x) {
+            return std::abs(x) < round_off ? 0. : x;
+          };
+          const double       c = snap(std::cos(a)), s = snap(std::sin(a));
+          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
+          Tensor<2, 3>       Ra = unit_symmetric_tensor<3>();
+          Ra[i][i]              = c;
+          Ra[i][j]              = -s;
+          Ra[j][i]              = s;
+          Ra[j][j]              = c;
+          R                     = Ra * R;
+        }
+      return R;
+    }
+
+    std::string
+    vector_text(const Tensor<1, 3> &v, const double scale = 1)
+    {
+      std::ostringstream out;
+      out << std::setprecision(4) << '(' << scale * v[0] + 0. << ", "
+          << scale * v[1] + 0. << ", " << scale * v[2] + 0. << ')';
+      return out.str();
+    }
+  } // namespace
+
+  LoadState
+  changed_load(const ScenarioParameters &p, const LoadState &scene)
+  {
+    LoadState changed    = scene;
+    changed.acceleration = rotation(p.rotation_degrees) * scene.acceleration;
+    if (p.has_fluid_level)
+      {
+        changed.drained_acceleration = changed.acceleration;
+        changed.fluid_level          = p.fluid_level;
+      }
+    if (p.has_pressure)
+      changed.pressure = p.pressure;
+    changed.tissue_acceleration += p.tissue_acceleration;
+    return changed;
+  }
+
+  void
+  check_scenario(const Parameters   &parameters,
+                 const LabelledMesh &mesh,
+                 const MPI_Comm      comm)
+  {
+    const ScenarioParameters &p = parameters.scenario;
+    LoadState                 scene;
+    scene.acceleration      = parameters.loads.gravity;
+    const LoadState changed = changed_load(p, scene);
+    if (!p.has_fluid_level)
+      return;
+    const Tensor<1, 3> g = changed.acceleration;
+    if (g.norm() == 0)
+      throw InputError("",
+                       "Scenario/Fluid level",
+                       "without gravity no level is defined; expected "
+                       "Loads/Gravity != 0");
+    // Height of the body's highest vertex above the level (m).
+    double top = -std::numeric_limits<double>::max();
+    for (const Point<3> &v : mesh.triangulation().get_vertices())
+      top = std::max(top, -(g * (v - p.fluid_level)) / g.norm());
+    top = Utilities::MPI::max(top, comm);
+    if (top <= 0)
+      throw InputError(
+        "",
+        "Scenario/Fluid level",
+        "the level lies " + number_text(-top / parameters.mesh.length_unit) +
+          " " + parameters.mesh.length_unit_name +
+          " above the body's highest point (against gravity): nothing is "
+          "drained; expected a point below the top of the body");
+  }
+
+  std::map<Label, TissueShift>
+  tissue_shifts(const ForwardProblem &forward, const VectorType &u_owned)
+  {
+    const VectorType                 u          = forward.ghosted_copy(u_owned);
+    const unsigned int               p          = forward.fe().degree;
+    const Quadrature<3>              quadrature = forward.mesh().is_simplex() ?
+                                                    Quadrature<3>(QGaussSimplex<3>(p + 1)) :
+                                                    Quadrature<3>(QGauss<3>(p + 1));
+    FEValues<3>                      fv(forward.mapping(),
+                   forward.fe(),
+                   quadrature,
+                   update_values | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<1, 3>>        values(quadrature.size());
+    std::map<types::global_dof_index, const Node *> node_of;
+    for (const Node &node : forward.relevant_nodes())
+      node_of[node.dofs[0]] = &node;
+    std::vector<types::global_dof_index> dofs(forward.fe().n_dofs_per_cell());
+
+    std::map<Label, TissueShift> shifts;
+    for (const Label label : forward.mesh().labels())
+      shifts[label];
+    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          TissueShift &t = shifts[cell->material_id()];
+          fv.reinit(cell);
+          fv[displacement].get_function_values(u, values);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              t.volume += fv.JxW(q);
+              t.centroid += values[q] * fv.JxW(q);
+            }
+          cell->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            if (const auto it = node_of.find(dof); it != node_of.end())
+              {
+                const Node  &node = *it->second;
+                Tensor<1, 3> v;
+                for (unsigned int c = 0; c < 3; ++c)
+                  v[c] = u[node.dofs[c]];
+                if (v.norm() > t.max_shift)
+                  {
+                    t.max_shift = v.norm();
+                    t.max_where = node.position;
+                  }
+              }
+        }
+    const MPI_Comm comm = forward.dof_handler().get_communicator();
+    for (auto &[label, t] : shifts)
+      {
+        t.volume = Utilities::MPI::sum(t.volume, comm);
+        for (unsigned int c = 0; c < 3; ++c)
+          t.centroid[c] = Utilities::MPI::sum(t.centroid[c], comm);
+        if (t.volume > 0)
+          t.centroid /= t.volume;
+        std::tie(t.max_shift, t.max_where) =
+          largest_with_place(t.max_shift, t.max_where, comm);
+      }
+    return shifts;
+  }
+
+  Scenario::Scenario(const Parameters                 &parameters,
+                     ForwardProblem                   &forward,
+                     ContactProblem                   *contact,
+                     OutputWriter                     &output,
+                     Summary                          &summary,
+                     const dealii::ConditionalOStream &pcout)
+    : parameters(parameters)
+    , forward(forward)
+    , contact(contact)
+    , output(output)
+    , summary(summary)
+    , pcout(pcout)
+  {}
+
+  std::string
+  Scenario::description(const LoadState &scene, const LoadState &changed) const
+  {
+    const ScenarioParameters &p = parameters.scenario;
+    std::string               text;
+    const auto                add = [&](const std::string &part) {
+      text += (text.empty() ? "" : "; ") + part;
+    };
+    if (p.rotation_degrees.norm_square() > 0)
+      add("gravity " + vector_text(scene.acceleration) + " turned by " +
+          vector_text(p.rotation_degrees) + " degrees to " +
+          vector_text(changed.acceleration) + " m/s^2");
+    if (p.has_fluid_level)
+      add("fluid drained above " +
+          vector_text(p.fluid_level, 1. / parameters.mesh.length_unit) + " " +
+          parameters.mesh.length_unit_name);
+    if (p.has_pressure)
+      add("surface pressure " + number_text(scene.pressure) + " -> " +
+          number_text(changed.pressure) + " Pa");
+    if (p.tissue_acceleration.norm_square() > 0)
+      add("tissue body force " + vector_text(p.tissue_acceleration) +
+          " m/s^2 (not buoyed)");
+    return text.empty() ? "no change" : text;
+  }
+
+  void
+  Scenario::run(const Failure &fail)
+  {
+    // The pre-stressed model's equilibrium: where both models start.
+    const VectorType d_eq    = forward.owned_copy(forward.displacement());
+    const VectorType w_rest  = forward.owned_copy(forward.rest_displacement());
+    const LoadState  scene   = forward.load();
+    const LoadState  changed = changed_load(parameters.scenario, scene);
+    ContactProblem::State start_set;
+    if (contact != nullptr)
+      start_set = contact->state();
+    pcout << "Scenario: " << description(scene, changed) << std::endl;
+
+    pcout << "  pre-stressed model: the scene's loads -> the changed loads"
+          << std::endl;
+    const SolveStatistics s1 = forward.solve(changed, w_rest);
+    if (!s1.converged)
+      fail(s1, "pre-stressed");
+    // What carries the changed load, at the pre-stressed model's end state
+    // (its contact set and normals; the stress-free solve changes them).
+    summary.set("scenario_external_force_N",
+                forward.total_external_force(changed));
+    summary.set("scenario_support_reaction_N", forward.support_reaction());
+    summary.set("scenario_contact_force_N",
+                contact != nullptr ?
+                  contact->total_force(forward.raw_residual()) :
+                  Tensor<1, 3>());
+    summary.set("scenario_elastic_support_force_N",
+                forward.elastic_support_force());
+    VectorType contact_fields;
+    if (contact != nullptr)
+      contact_fields =
+        contact->nodal_fields(forward.raw_residual(), output.length_scale());
+    const VectorType d1 = forward.owned_copy(forward.displacement());
+    VectorType       u1 = d1;
+    u1 -= d_eq;
+    ContactProblem::State end_set;
+    if (contact != nullptr)
+      end_set = contact->state();
+
+    pcout << "  stress-free model (rest shape = the pre-stressed equilibrium, "
+             "the same contact set): the change alone"
+          << std::endl;
+    forward.set_state(d_eq, d_eq, LoadState());
+    if (contact != nullptr)
+      contact->set_state(start_set);
+    const SolveStatistics s2 = forward.solve(difference(changed, scene), d_eq);
+    if (!s2.converged)
+      fail(s2, "stress-free");
+    VectorType u2 = forward.owned_copy(forward.displacement());
+    u2 -= d_eq;
+
+    // The pre-stressed model's end state is the one written.
+    forward.set_state(d1, w_rest, changed);
+    if (contact != nullptr)
+      contact->set_state(end_set);
+    summary.set("scenario_newton_iterations_prestressed",
+                long(s1.newton_iterations));
+    summary.set("scenario_newton_iterations_stress_free",
+                long(s2.newton_iterations));
+    report(u1, u2, contact_fields);
+  }
+
+  void
+  Scenario::report(const VectorType &prestressed,
+                   const VectorType &stress_free,
+                   const VectorType &contact_fields)
+  {
+    const auto        a     = tissue_shifts(forward, prestressed);
+    const auto        b     = tissue_shifts(forward, stress_free);
+    const LabelNames &names = forward.mesh().label_names();
+    // Ratios of shifts below a nanometre are ratios of round-off: 0.
+    constexpr double least_shift = 1e-9; // m
+    const auto       ratio       = [](const double x, const double y) {
+      return x > least_shift ? y / x : 0.;
+    };
+    output.write_text("scenario.csv", [&](std::ostream &out) {
+      out << std::setprecision(6)
+          << "tissue,label,volume_ml,"
+             "prestressed_centroid_x_mm,prestressed_centroid_y_mm,"
+             "prestressed_centroid_z_mm,prestressed_centroid_mm,"
+             "stress_free_centroid_x_mm,stress_free_centroid_y_mm,"
+             "stress_free_centroid_z_mm,stress_free_centroid_mm,"
+             "prestressed_max_mm,stress_free_max_mm,"
+             "ratio_centroid,ratio_max\n";
+      for (const auto &[label, t] : a)
+        {
+          const TissueShift &s    = b.at(label);
+          const std::string  name = names.name(label).empty() ?
+                                      std::to_string(label) :
+                                      names.name(label);
+          out << name << ',' << label << ',' << t.volume * ml_per_m3;
+          for (const TissueShift *x : {&t, &s})
+            {
+              for (unsigned int c = 0; c < 3; ++c)
+                out << ',' << x->centroid[c] * mm_per_m + 0.;
+              out << ',' << x->centroid.norm() * mm_per_m;
+            }
+          out << ',' << t.max_shift * mm_per_m << ',' << s.max_shift * mm_per_m
+              << ',' << ratio(t.centroid.norm(), s.centroid.norm()) << ','
+              << ratio(t.max_shift, s.max_shift) << '\n';
+        }
+    });
+    const auto [mean1, max1] = forward.nodal_norms(prestressed);
+    const auto [mean2, max2] = forward.nodal_norms(stress_free);
+    summary.set("scenario_prestressed_mean_shift_mm", mean1 * mm_per_m);
+    summary.set("scenario_prestressed_max_shift_mm", max1 * mm_per_m);
+    summary.set("scenario_stress_free_mean_shift_mm", mean2 * mm_per_m);
+    summary.set("scenario_stress_free_max_shift_mm", max2 * mm_per_m);
+    const auto row = [&](const std::string &what, double x, double y) {
+      std::ostringstream line;
+      line << "  " << std::left << std::setw(24) << what.substr(0, 24)
+           << std::right << std::fixed << std::setprecision(3) << std::setw(13)
+           << x * mm_per_m << std::setw(13) << y * mm_per_m << std::setw(8)
+           << ratio(x, y) << '\n';
+      pcout << line.str();
+    };
+    pcout << "  shift in mm             pre-stressed  stress-free   ratio\n";
+    row("all nodes, mean", mean1, mean2);
+    row("all nodes, max", max1, max2);
+    for (const auto &[label, t] : a)
+      {
+        const std::string name = names.name(label).empty() ?
+                                   "label " + std::to_string(label) :
+                                   names.name(label);
+        row(name + ", centroid",
+            t.centroid.norm(),
+            b.at(label).centroid.norm());
+        row(name + ", max", t.max_shift, b.at(label).max_shift);
+      }
+    pcout << std::flush;
+
+    const double            scale  = output.length_scale();
+    const std::string      &unit   = parameters.mesh.length_unit_name;
+    std::vector<NodalField> fields = {
+      {&prestressed, {"prestressed_shift_" + unit}, scale, ""},
+      {&stress_free, {"stress_free_shift_" + unit}, scale, ""}};
+    if (contact != nullptr)
+      {
+        fields.push_back(
+          {&contact_fields,
+           {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
+           1.,
+           ""});
+      }
+    if (parameters.output.write_vtu)
+      output.write_fields(forward, 0, 0, fields, {}, "scenario");
+  }
+} // namespace RestShape
