@@ -6,6 +6,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_reductions.h>
 #include <restshape/base/units.h>
+#include <restshape/postprocess/postprocessor.h>
 
 #include <cmath>
 #include <iomanip>
@@ -224,24 +225,21 @@ namespace RestShape
     const SolveStatistics s1 = forward.solve(changed, w_rest);
     if (!s1.converged)
       fail(s1, "pre-stressed");
+    const VectorType d1 = forward.owned_copy(forward.displacement());
+    VectorType       u1 = d1;
+    u1 -= d_eq;
     // What carries the changed load, at the pre-stressed model's end state
     // (its contact set and normals; the stress-free solve changes them).
-    summary.set("scenario_external_force_N",
-                forward.total_external_force(changed));
-    summary.set("scenario_support_reaction_N", forward.support_reaction());
-    summary.set("scenario_contact_force_N",
-                contact != nullptr ?
-                  contact->total_force(forward.raw_residual()) :
-                  Tensor<1, 3>());
-    summary.set("scenario_elastic_support_force_N",
-                forward.elastic_support_force());
+    const SolveReductions r = compute_reductions(
+      forward, contact, u1, forward.dof_handler().get_communicator());
+    summary.set("scenario_external_force_N", r.external);
+    summary.set("scenario_support_reaction_N", r.reaction);
+    summary.set("scenario_contact_force_N", r.contact);
+    summary.set("scenario_elastic_support_force_N", r.support);
     VectorType contact_fields;
     if (contact != nullptr)
       contact_fields =
         contact->nodal_fields(forward.raw_residual(), output.length_scale());
-    const VectorType d1 = forward.owned_copy(forward.displacement());
-    VectorType       u1 = d1;
-    u1 -= d_eq;
     ContactProblem::State end_set;
     if (contact != nullptr)
       end_set = contact->state();

@@ -1,11 +1,11 @@
 // The parameters of subsection Scenario.
 #include <deal.II/base/utilities.h>
 
+#include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameters.h>
 
 #include <cmath>
-#include <cstdlib>
 
 namespace RestShape
 {
@@ -87,15 +87,18 @@ namespace RestShape
     has_pressure = !pressure_text.empty();
     if (has_pressure)
       {
-        char *end = nullptr;
-        pressure  = std::strtod(pressure_text.c_str(), &end);
-        if (end == pressure_text.c_str() || *end != '\0' ||
-            !std::isfinite(pressure))
-          throw InputError("",
-                           "Scenario/Surface pressure",
-                           "'" + pressure_text +
-                             "' is not a number; expected a pressure in Pa "
-                             "or nothing (unchanged)");
+        try
+          {
+            pressure = parse_number("Scenario/Surface pressure", pressure_text);
+          }
+        catch (const InputError &)
+          {
+            throw InputError("",
+                             "Scenario/Surface pressure",
+                             "'" + pressure_text +
+                               "' is not a number; expected a pressure in "
+                               "Pa or nothing (unchanged)");
+          }
       }
     tissue_acceleration =
       parse_vector(prm.get("Tissue body force"), "Scenario/Tissue body force");

@@ -43,7 +43,8 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
-    if (parameters.scenario.enabled)
+    // (The mesh's part: once, before the forward problem exists.)
+    if (parameters.scenario.enabled && !forward)
       try
         {
           check_scenario(parameters, *mesh, comm);

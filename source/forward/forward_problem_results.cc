@@ -228,21 +228,13 @@ namespace RestShape
                    fe_,
                    cell_quadrature,
                    update_JxW_values | update_quadrature_points);
-    const bool   varies = body_force_varies(load);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fv.reinit(cell);
-          double volume = 0;
           for (const unsigned int q : fv.quadrature_point_indices())
-            {
-              volume += fv.JxW(q);
-              if (varies)
-                force +=
-                  body_force(*cell, fv.quadrature_point(q), load) * fv.JxW(q);
-            }
-          if (!varies)
-            force += body_force(*cell, cell->center(), load) * volume;
+            force +=
+              body_force(*cell, fv.quadrature_point(q), load) * fv.JxW(q);
         }
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);

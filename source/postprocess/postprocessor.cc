@@ -32,9 +32,11 @@ namespace RestShape
     r.surface = forward.surface_force(forward.load());
     if (contact)
       {
-        r.adhesion         = contact->adhesion(forward.raw_residual());
-        r.contact_by_label = contact->force_by_label(forward.raw_residual());
-        r.fixed_planes     = contact->fixed_plane_nodes();
+        r.adhesion = contact->adhesion(forward.raw_residual());
+        // Reported at the target only (SummaryPostprocessor, ScreenReport).
+        if (forward.scene_parameters().inverse.enabled)
+          r.contact_by_label = contact->force_by_label(forward.raw_residual());
+        r.fixed_planes = contact->fixed_plane_nodes();
       }
     return r;
   }
