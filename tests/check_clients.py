@@ -122,6 +122,35 @@ def check_grid(path, grid, summary, unit, final):
         if values.ndim != 2 or values.shape[1] != 3 or \
                 not all(math.isfinite(v) for v in values.ravel()):
             fail(path, 'displacement is not a finite 3-vector field')
+    check_contact_fields(path, pd, summary, unit, final)
+
+
+def check_contact_fields(path, pd, summary, unit, final):
+    """Gap and pressure finite at every point (a NaN at one node once
+    blanked every node of its cells: all of them at P2); in the final state
+    with active nodes, some pressure and some node on the obstacle."""
+    import numpy
+    arrays = {}
+    for name in ('contact_active', 'contact_gap_' + unit,
+                 'contact_pressure_Pa'):
+        a = pd.GetArray(name)
+        if a is None:
+            return
+        arrays[name] = vtk_to_numpy(a)
+        if not numpy.all(numpy.isfinite(arrays[name])):
+            fail(path, f'{name}: {numpy.count_nonzero(~numpy.isfinite(arrays[name]))} '
+                       f'of {len(arrays[name])} values are not finite')
+            return
+    if final and summary.get('active_contact_nodes', 0) > 0:
+        active = arrays['contact_active'] == 1
+        pressure = arrays['contact_pressure_Pa']
+        gap = arrays['contact_gap_' + unit]
+        if not active.any() or not numpy.any(pressure[active] > 0):
+            fail(path, 'active contact nodes in summary.json, none with a '
+                       'positive contact pressure in the file')
+        elif numpy.abs(gap[active]).min() > 1e-3:
+            fail(path, f'no active node touches the obstacle (smallest gap '
+                       f'{numpy.abs(gap[active]).min()} {unit})')
 
 
 def check_with_meshio(path, grid):

@@ -342,12 +342,18 @@ namespace RestShape
   {
     const std::vector<double> pressure = pressures(raw_residual);
     VectorType                fields   = forward.zero_vector();
-    // Gap and pressure exist only at the contact candidates (the surface
-    // nodes that may touch the obstacle): elsewhere NaN, which ParaView
-    // leaves blank, not 0, which would look like a touching node.
+    // Off the contact candidates: the signed distance of the node to the
+    // obstacle and no pressure. (Not NaN: the writer evaluates each field
+    // as sum u_i phi_i, and a NaN at one node of a cell, times phi_i = 0,
+    // blanked every node of that cell: all of them at P2.)
+    const VectorType &d = forward.displacement();
     for (const Node &node : forward.owned_nodes())
-      for (const unsigned int c : {1, 2})
-        fields[node.dofs[c]] = std::numeric_limits<double>::quiet_NaN();
+      {
+        Point<3> x = node.position;
+        for (unsigned int k = 0; k < 3; ++k)
+          x[k] += d[node.dofs[k]];
+        fields[node.dofs[1]] = obstacle->gap(x).gap * length_scale;
+      }
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned)
         {
