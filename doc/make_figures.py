@@ -10,7 +10,10 @@
 #
 #   build/restshape prm/brain_shift_prone.prm
 #   build/restshape prm/brain_shift_drained.prm
+#   build/restshape prm/brain_shift_craniotomy.prm
 #   xvfb-run -a python3 doc/make_figures.py scenarios
+#
+# (and doc/figures/brain_craniotomy.png from the last)
 #
 # Writes doc/figures/brain_shapes.png (target, rest and equilibrium surfaces,
 # lateral view from the left), doc/figures/brain_error.png (the error
@@ -255,9 +258,25 @@ def scenarios(prone, drained):
     print('wrote doc/figures/brain_scenarios.png')
 
 
+def craniotomy(directory):
+    """The frontal craniotomy: the pre-stressed brain's shift and where the
+    stress-free model differs, seen from the front."""
+    g = read_vtu(os.path.join(directory, 'scenario.vtu'))
+    shift = magnitude(g, 'prestressed_shift_mm')
+    diff = magnitude(g, 'stress_free_shift_mm', 'prestressed_shift_mm')
+    render_panels([('craniotomy: shift, max %.2f mm' % shift.max(),
+                    surface_at(g, None, 's', shift), 's', shift.max()),
+                   ('|stress-free - pre-stressed|, max %.2f mm' % diff.max(),
+                    surface_at(g, None, 'd', diff), 'd', diff.max())],
+                  'doc/figures/brain_craniotomy.png', direction=(0, -1, 0),
+                  size=(1000, 520))
+    print('wrote doc/figures/brain_craniotomy.png')
+
+
 os.makedirs('doc/figures', exist_ok=True)
 if sys.argv[1:] == ['scenarios']:
     scenarios('output/brain_shift_prone', 'output/brain_shift_drained')
+    craniotomy('output/brain_shift_craniotomy')
     raise SystemExit(0)
 if sys.argv[1:] == ['tracts']:
     tracts('output/brain_tracts', 'output/brain_tracts_uniform')

@@ -71,7 +71,38 @@ namespace RestShape
     if (p.has_pressure)
       changed.pressure = p.pressure;
     changed.tissue_acceleration += p.tissue_acceleration;
+    // The opening is at atmospheric pressure: its faces lose the uniform
+    // pressure that acts after the change.
+    if (p.craniotomy.defined())
+      changed.opening_pressure = changed.pressure;
     return changed;
+  }
+
+  void
+  check_craniotomy(const Parameters   &parameters,
+                   const LabelledMesh &mesh,
+                   const MPI_Comm      comm)
+  {
+    const Region &opening = parameters.scenario.craniotomy;
+    if (!opening.defined())
+      return;
+    // Surface faces of the body (mesh geometry) whose centre lies inside.
+    unsigned int faces = 0;
+    for (const auto &cell : mesh.triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          faces += mesh.at_surface(*cell, f) &&
+                   opening.contains(cell->face(f)->center());
+    if (Utilities::MPI::sum(faces, comm) == 0)
+      throw InputError(
+        "",
+        "Scenario/Craniotomy",
+        "the " +
+          opening.text(parameters.mesh.length_unit,
+                       parameters.mesh.length_unit_name) +
+          " contains no face of the body's surface: it opens nothing; "
+          "expected a region that cuts the skull where the brain's surface "
+          "lies");
   }
 
   void
@@ -83,6 +114,7 @@ namespace RestShape
     LoadState                 scene;
     scene.acceleration      = parameters.loads.gravity;
     const LoadState changed = changed_load(p, scene);
+    check_craniotomy(parameters, mesh, comm);
     if (!p.has_fluid_level)
       return;
     const Tensor<1, 3> g = changed.acceleration;
@@ -201,6 +233,13 @@ namespace RestShape
     if (p.has_pressure)
       add("surface pressure " + number_text(scene.pressure) + " -> " +
           number_text(changed.pressure) + " Pa");
+    if (p.craniotomy.defined())
+      add("craniotomy: " +
+          p.craniotomy.text(parameters.mesh.length_unit,
+                            parameters.mesh.length_unit_name) +
+          " (" + std::to_string(opened_nodes) +
+          " surface nodes freed from the skull, " +
+          std::to_string(opened_faces) + " pressure faces at 0 Pa)");
     if (p.tissue_acceleration.norm_square() > 0)
       add("tissue body force " + vector_text(p.tissue_acceleration) +
           " m/s^2 (not buoyed)");
@@ -215,6 +254,16 @@ namespace RestShape
     const VectorType w_rest  = forward.owned_copy(forward.rest_displacement());
     const LoadState  scene   = forward.load();
     const LoadState  changed = changed_load(parameters.scenario, scene);
+    const Region    &opening = parameters.scenario.craniotomy;
+    if (opening.defined())
+      {
+        opened_faces = forward.open_surface(opening);
+        if (contact != nullptr)
+          opened_nodes = contact->remove_contact(opening);
+        summary.set("scenario_craniotomy_freed_contact_nodes",
+                    long(opened_nodes));
+        summary.set("scenario_craniotomy_pressure_faces", long(opened_faces));
+      }
     ContactProblem::State start_set;
     if (contact != nullptr)
       start_set = contact->state();

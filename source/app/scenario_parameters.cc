@@ -61,6 +61,18 @@ namespace RestShape
                       "the tissue alone, not buoyed: a force field as in "
                       "Table 1 of Morin et al. 2015 ('9.81, 0, 0': the "
                       "tissue's weight, sideways).");
+    prm.declare_entry(
+      "Craniotomy",
+      "",
+      Patterns::Anything(),
+      "An opening of the skull: 'sphere: x, y, z, r' or 'cylinder: x, y, "
+      "z, ax, ay, az, r' (centre, axis direction and radius in the mesh's "
+      "length unit; the cylinder is unbounded along its axis). Surface "
+      "nodes of the contact labels inside it lose their contact with the "
+      "skull (tissue may bulge through), and the pressure faces inside it "
+      "(by their centre, mesh geometry) are at atmospheric pressure: they "
+      "lose the uniform surface pressure (after Surface pressure). Empty: "
+      "no craniotomy.");
     prm.leave_subsection();
   }
 
@@ -102,6 +114,7 @@ namespace RestShape
       }
     tissue_acceleration =
       parse_vector(prm.get("Tissue body force"), "Scenario/Tissue body force");
+    craniotomy = parse_region(prm.get("Craniotomy"), "Scenario/Craniotomy");
     prm.leave_subsection();
   }
 } // namespace RestShape

@@ -537,6 +537,7 @@ namespace RestShape
     // The fluid levels are given in the mesh's length unit.
     loads.fluid_level *= mesh.length_unit;
     scenario.fluid_level *= mesh.length_unit;
+    scenario.craniotomy.scale(mesh.length_unit);
     for (const LabelListEntry &e : label_list_entries)
       {
         prm.enter_subsection(e.section);
@@ -549,11 +550,14 @@ namespace RestShape
                        "Scenario/Enabled",
                        "a scenario starts from the pre-stressed model: set "
                        "Inverse problem/Enabled = true");
-    const bool moves_fluid =
-      scenario.has_fluid_level || scenario.rotation_degrees.norm_square() > 0;
+    const bool moves_fluid = scenario.has_fluid_level ||
+                             scenario.rotation_degrees.norm_square() > 0 ||
+                             scenario.craniotomy.defined();
     if (scenario.enabled && moves_fluid && loads.hydrostatic)
       throw InputError("",
                        scenario.has_fluid_level ? "Scenario/Fluid level" :
+                       scenario.craniotomy.defined() ?
+                                                  "Scenario/Craniotomy" :
                                                   "Scenario/Gravity rotation",
                        "not available with Loads/Fluid load = hydrostatic "
                        "pressure yet; expected Fluid load = buoyancy");

@@ -258,7 +258,7 @@ namespace RestShape
         // A forward simulation brings every node onto the allowed side; the
         // one-sided rule of the inverse iteration lets a node that starts
         // beyond the obstacle free until it has been on the allowed side.
-        c.eligible = !one_sided || g.gap >= -gap_tolerance;
+        c.eligible = !c.removed && (!one_sided || g.gap >= -gap_tolerance);
         c.active   = c.active && c.eligible && g.gap < h_min;
         c.pulled   = false;
         c.grazing  = false;
@@ -306,7 +306,28 @@ namespace RestShape
     if (s.size() != candidates.size())
       return;
     for (unsigned int i = 0; i < candidates.size(); ++i)
-      std::tie(candidates[i].active, candidates[i].eligible) = s[i];
+      {
+        Candidate &c                   = candidates[i];
+        std::tie(c.active, c.eligible) = s[i];
+        c.active                       = c.active && !c.removed;
+        c.eligible                     = c.eligible && !c.removed;
+      }
+  }
+
+  unsigned int
+  ContactProblem::remove_contact(const Region &opening)
+  {
+    unsigned int removed = 0;
+    for (Candidate &c : candidates)
+      if (opening.contains(c.node.position))
+        {
+          c.removed  = true;
+          c.eligible = false;
+          c.active   = false;
+          removed += c.owned;
+        }
+    constraints_changed = true;
+    return Utilities::MPI::sum(removed, communicator());
   }
 
   void
@@ -345,7 +366,7 @@ namespace RestShape
             let_go(c);
           }
         c.planes.set_closest_face(x, g);
-        if (c.owned && !c.eligible &&
+        if (c.owned && !c.eligible && !c.removed &&
             (g.gap >= -gap_tolerance ||
              obstacle->n_crossings(c.previous_position, x) >= 2))
           c.eligible = true;

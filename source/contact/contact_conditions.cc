@@ -224,7 +224,7 @@ namespace RestShape
     std::vector<double> lambda;
     for (const Candidate &c : candidates)
       {
-        if (!c.owned)
+        if (!c.owned || c.removed)
           continue;
         const Point<3> x   = position(c, d);
         const double   gap = obstacle->gap(x).gap;

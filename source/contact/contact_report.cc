@@ -154,8 +154,9 @@ namespace RestShape
   unsigned int
   ContactProblem::n_outside() const
   {
-    return count_owned(
-      [this](const Candidate &c) { return c.gap < -gap_tolerance; });
+    return count_owned([this](const Candidate &c) {
+      return !c.removed && c.gap < -gap_tolerance;
+    });
   }
 
   Tensor<1, 3>
@@ -211,7 +212,7 @@ namespace RestShape
   {
     double p = -std::numeric_limits<double>::max();
     for (const Candidate &c : candidates)
-      if (c.owned && (c.eligible || !eligible_only))
+      if (c.owned && !c.removed && (c.eligible || !eligible_only))
         p = std::max(p, -c.gap);
     return Utilities::MPI::max(p, communicator()) + 0.;
   }

@@ -77,6 +77,24 @@ namespace RestShape
     return largest_with_place(highest, top, comm).second;
   }
 
+  unsigned int
+  ForwardProblem::open_surface(const Region &region)
+  {
+    opening            = region;
+    unsigned int faces = 0;
+    for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
+      faces += opening.contains(cell->face(f)->center());
+    });
+    faces = Utilities::MPI::sum(faces, comm);
+    // The pressure jumps at the opening's rim, which nothing holds.
+    if (faces > 0 && parameters.loads.follower && symmetric_tangent)
+      {
+        symmetric_tangent = false;
+        linear_solver->set_symmetric(false);
+      }
+    return faces;
+  }
+
   bool
   ForwardProblem::pressure_surface_is_closed_or_held() const
   {

@@ -3,6 +3,7 @@
 // level, and the change between two load states that the stress-free model
 // receives (linear in every term, so load stepping reaches it exactly).
 #include <restshape/app/scenario.h>
+#include <restshape/base/input_error.h>
 
 #include <cmath>
 
@@ -94,5 +95,43 @@ main()
            end.drained_acceleration == changed.drained_acceleration &&
            end.pressure == changed.pressure,
          "load stepping ends at the changed load");
+
+  // A craniotomy: its faces lose the uniform pressure after the change.
+  ScenarioParameters opened;
+  opened.craniotomy    = parse_region("sphere: 0, 0, 10, 5", "test");
+  opened.has_pressure  = true;
+  opened.pressure      = 40;
+  const LoadState open = changed_load(opened, scene);
+  expect(open.pressure == 40 && open.opening_pressure == 40,
+         "an opening is at atmospheric pressure: it loses the pressure "
+         "after the change");
+  expect(difference(open, scene).opening_pressure == 40 &&
+           difference(open, scene).pressure == -60 &&
+           between(scene, open, 0.25).opening_pressure == 10,
+         "the opening's pressure is a linear load term");
+  expect(opened.craniotomy.contains(Point<3>(0, 3, 14)) &&
+           !opened.craniotomy.contains(Point<3>(0, 3, 14.01)),
+         "a sphere contains its inside and boundary, not beyond");
+  const Region cylinder = parse_region("cylinder: 1, 1, 0, 0, 0, 2, 3", "test");
+  expect(cylinder.contains(Point<3>(1, 4, -1e6)) &&
+           !cylinder.contains(Point<3>(4.01, 1, 0)),
+         "a cylinder is unbounded along its (normalised) axis");
+  unsigned int refused = 0;
+  for (const char *bad : {"sphere: 0, 0, 0",
+                          "cube: 0, 0, 0, 1",
+                          "sphere 0, 0, 0, 1",
+                          "sphere: 0, 0, 0, -1",
+                          "cylinder: 0, 0, 0, 0, 0, 0, 1",
+                          "sphere: a, 0, 0, 1"})
+    try
+      {
+        parse_region(bad, "test");
+      }
+    catch (const InputError &)
+      {
+        refused += 1;
+      }
+  expect(refused == 6 && parse_region(" ", "test").defined() == false,
+         "bad regions are refused; an empty one is none");
   return failures == 0 ? 0 : 1;
 }

@@ -86,6 +86,8 @@ namespace RestShape
     OutputWriter                     &output;
     Summary                          &summary;
     const dealii::ConditionalOStream &pcout;
+    /// Contact nodes and pressure faces in the craniotomy.
+    unsigned int opened_nodes = 0, opened_faces = 0;
   };
 } // namespace RestShape
 

@@ -12,6 +12,7 @@
 
 #include <restshape/base/label_names.h>
 #include <restshape/base/label_values.h>
+#include <restshape/base/region.h>
 
 #include <set>
 #include <string>
@@ -289,6 +290,7 @@ namespace RestShape
     bool                 has_pressure = false;
     double               pressure     = 0;    // Pa
     dealii::Tensor<1, 3> tissue_acceleration; // m/s^2
+    Region               craniotomy;          // m (given in the mesh unit)
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

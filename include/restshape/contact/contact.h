@@ -112,6 +112,15 @@ namespace RestShape
       return one_sided;
     }
 
+    /**
+     * An opening of the obstacle (a craniotomy): the candidates inside
+     * @p opening (mesh geometry) lose their contact for the rest of the run:
+     * never eligible or active, never counted beyond the obstacle (tissue
+     * may bulge through the opening). Returns how many (all ranks).
+     */
+    unsigned int
+    remove_contact(const Region &opening);
+
     /// The active and eligible flags of every candidate: saved with an
     /// equilibrium, restored with it when a step is taken back.
     State
@@ -311,6 +320,7 @@ namespace RestShape
       /// Carried off the surface by its planes: it follows the surface's
       /// distance along their mean normal for the rest of the solve.
       bool follow_surface = false;
+      bool removed        = false; // in an opening (remove_contact())
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its
       /// pull accepted (not released again in this solve).

@@ -164,6 +164,16 @@ namespace RestShape
     /// all lies.
     dealii::Point<3>
     highest_pressure_point(const dealii::Tensor<1, 3> &acceleration) const;
+    /**
+     * An opening of the skull (a craniotomy): the pressure faces whose
+     * centre (mesh geometry) lies in @p opening carry p(x) less the load's
+     * opening_pressure from now on. A follower pressure on a surface with
+     * such a patch is not conservative: the tangent becomes non-symmetric
+     * (and the linear solver follows). Returns the number of pressure
+     * faces in the opening (all ranks).
+     */
+    unsigned int
+    open_surface(const Region &opening);
 
     // --- state ---------------------------------------------------------
     /// Equilibrium displacement from the mesh geometry (ghosted, m).
@@ -652,6 +662,8 @@ namespace RestShape
     std::set<Label>                     pressure_labels, support_labels;
     /// Quadrature points of the pressure faces (mesh geometry, m, owned).
     std::vector<dealii::Point<3>> pressure_points;
+    /// The skull's opening (open_surface()); none by default.
+    Region opening;
 
     MatrixType tangent;
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,

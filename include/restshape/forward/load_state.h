@@ -24,6 +24,10 @@ namespace RestShape
    *   drained_acceleration, in the mesh geometry). Drained to a level under
    *   gravity g: drained_acceleration = g.
    *
+   * - opening_pressure (Pa): the uniform pressure taken off the pressure
+   *   faces of an opening of the skull (ForwardProblem::open_surface()):
+   *   they carry p(x) - opening_pressure.
+   *
    * Every term is linear in its vector, so the difference of two load
    * states (what a scenario changes) is a load state too.
    */
@@ -34,6 +38,7 @@ namespace RestShape
     dealii::Tensor<1, 3> tissue_acceleration;
     dealii::Tensor<1, 3> drained_acceleration;
     dealii::Point<3>     fluid_level;
+    double               opening_pressure = 0;
   };
 
   /// The load at fraction @p s of the way from @p start to @p end
@@ -52,6 +57,8 @@ namespace RestShape
     load.drained_acceleration =
       start.drained_acceleration +
       s * (end.drained_acceleration - start.drained_acceleration);
+    load.opening_pressure = start.opening_pressure +
+                            s * (end.opening_pressure - start.opening_pressure);
     load.fluid_level = end.drained_acceleration.norm_square() > 0 ?
                          end.fluid_level :
                          start.fluid_level;
@@ -68,6 +75,7 @@ namespace RestShape
     d.pressure             = a.pressure - b.pressure;
     d.tissue_acceleration  = a.tissue_acceleration - b.tissue_acceleration;
     d.drained_acceleration = a.drained_acceleration - b.drained_acceleration;
+    d.opening_pressure     = a.opening_pressure - b.opening_pressure;
     d.fluid_level =
       a.drained_acceleration.norm_square() > 0 ? a.fluid_level : b.fluid_level;
     return d;

@@ -46,7 +46,7 @@ namespace RestShape
     bool
     acts(const LoadState &load) const
     {
-      return load.pressure != 0 ||
+      return load.pressure != 0 || load.opening_pressure != 0 ||
              (fluid_density > 0 && load.acceleration.norm_square() > 0);
     }
 
