@@ -159,19 +159,13 @@ namespace RestShape
     /// The load state of the paper's scene: gravity and the CSF pressure.
     LoadState
     scene_load() const;
-    /// The point of the pressure faces (mesh geometry, m) highest against
-    /// @p acceleration: where the free surface of a fluid that wets them
-    /// all lies.
+    /// The pressure faces' point (mesh geometry, m) highest against
+    /// @p acceleration: the free surface of a fluid that wets them all.
     dealii::Point<3>
     highest_pressure_point(const dealii::Tensor<1, 3> &acceleration) const;
-    /**
-     * An opening of the skull (a craniotomy): the pressure faces whose
-     * centre (mesh geometry) lies in @p opening carry p(x) less the load's
-     * opening_pressure from now on. A follower pressure on a surface with
-     * such a patch is not conservative: the tangent becomes non-symmetric
-     * (and the linear solver follows). Returns the number of pressure
-     * faces in the opening (all ranks).
-     */
+    /// A craniotomy: pressure faces centred in @p opening (mesh geometry)
+    /// carry p(x) - opening_pressure; the tangent turns non-symmetric (a
+    /// follower load stopping at the rim). Returns their number.
     unsigned int
     open_surface(const Region &opening);
 
@@ -662,8 +656,7 @@ namespace RestShape
     std::set<Label>                     pressure_labels, support_labels;
     /// Quadrature points of the pressure faces (mesh geometry, m, owned).
     std::vector<dealii::Point<3>> pressure_points;
-    /// The skull's opening (open_surface()); none by default.
-    Region opening;
+    Region                        opening; // open_surface(); none by default
 
     MatrixType tangent;
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,
