@@ -145,9 +145,15 @@ namespace RestShape
   Point<3>
   ContactProblem::position(const Candidate &c, const VectorType &d) const
   {
-    Point<3> x = c.node.position;
+    return position(c.node, d);
+  }
+
+  Point<3>
+  ContactProblem::position(const Node &node, const VectorType &d)
+  {
+    Point<3> x = node.position;
     for (unsigned int k = 0; k < 3; ++k)
-      x[k] += d[c.node.dofs[k]];
+      x[k] += d[node.dofs[k]];
     return x;
   }
 

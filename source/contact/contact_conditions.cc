@@ -55,10 +55,8 @@ namespace RestShape
     for (const Candidate &c : candidates)
       if (c.owned)
         {
-          Point<3> x = c.node.position;
-          if (shift != nullptr)
-            for (unsigned int k = 0; k < 3; ++k)
-              x[k] += (*shift)[c.node.dofs[k]];
+          const Point<3> x =
+            shift != nullptr ? position(c.node, *shift) : c.node.position;
           const double gap = obstacle->gap(x).gap;
           outside += (gap < -deep_fraction * size);
           clearance = std::min(clearance, std::abs(gap));

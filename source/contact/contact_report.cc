@@ -347,14 +347,10 @@ namespace RestShape
     // obstacle and no pressure. (Not NaN: the writer evaluates each field
     // as sum u_i phi_i, and a NaN at one node of a cell, times phi_i = 0,
     // blanked every node of that cell: all of them at P2.)
-    const VectorType &d = forward.displacement();
     for (const Node &node : forward.owned_nodes())
-      {
-        Point<3> x = node.position;
-        for (unsigned int k = 0; k < 3; ++k)
-          x[k] += d[node.dofs[k]];
-        fields[node.dofs[1]] = obstacle->gap(x).gap * length_scale;
-      }
+      fields[node.dofs[1]] =
+        obstacle->gap(position(node, forward.displacement())).gap *
+        length_scale;
     for (unsigned int i = 0; i < candidates.size(); ++i)
       if (candidates[i].owned)
         {

@@ -354,6 +354,9 @@ namespace RestShape
     unsigned int
     count_owned(const Predicate &predicate) const;
 
+    /// X + d at a node (m).
+    static dealii::Point<3>
+    position(const Node &node, const VectorType &d);
     dealii::Point<3>
     position(const Candidate &c, const VectorType &d) const;
     /// The obstacle's force on an active node along its normal (N).
