@@ -2,6 +2,7 @@
 #include <restshape/base/units.h>
 #include <restshape/inverse/inverse_problem.h>
 #include <restshape/inverse/load_path.h>
+#include <restshape/inverse/stopping_rules.h>
 
 #include <cstdio>
 
@@ -15,106 +16,6 @@ namespace RestShape
     /// (force / (area E)) holds no rest shape: the co-rotational law
     /// inverts a cell compressed by a strain of 1.
     constexpr double max_support_strain = 1;
-
-    std::string
-    mm(const double metres)
-    {
-      char buffer[64];
-      std::snprintf(buffer, sizeof(buffer), "%.4g mm", metres * mm_per_m);
-      return buffer;
-    }
-
-    /**
-     * When the inverse iteration stops unconverged: divergence, stagnation,
-     * and runs of partial updates that gain nothing (their forward solves
-     * keep stopping short, typically where a cell would invert). Fed the
-     * error of every accepted iterate.
-     */
-    class StoppingRules
-    {
-    public:
-      StoppingRules(const double initial, const double tolerance)
-        : initial(initial)
-        , tolerance(tolerance)
-        , previous(initial)
-        , best(initial)
-      {}
-
-      /// The reason to stop after accepted iteration @p iteration with
-      /// error @p error, or "" to go on. @p partial: the update was taken
-      /// only up to @p fraction of it, the forward solve having stopped
-      /// for @p failure.
-      std::string
-      check(const unsigned int iteration,
-            const double       error,
-            const bool         partial,
-            const double       fraction,
-            const std::string &failure)
-      {
-        const std::string at = std::to_string(iteration);
-        increases            = (error > previous) ? increases + 1 : 0;
-        previous             = error;
-        if (error > 2 * initial)
-          return "diverged: the error grew from " + mm(initial) + " to " +
-                 mm(error) + " in " + at + " iterations";
-        if (increases >= 3)
-          return "diverged: the error grew in 3 iterations in a row, from "
-                 "its best " +
-                 mm(std::min(best, error)) + " to " + mm(error) +
-                 " at iteration " + at;
-        if (error < 0.99 * best)
-          {
-            best       = error;
-            since_best = 0;
-            fractions.clear();
-            return "";
-          }
-        ++since_best;
-        if (!partial)
-          fractions.clear();
-        else
-          {
-            fractions.push_back(fraction);
-            if (fractions.size() >= max_partial)
-              {
-                std::string list;
-                for (const double f : fractions)
-                  {
-                    char buffer[32];
-                    std::snprintf(buffer, sizeof(buffer), "%.3g", f);
-                    list += (list.empty() ? "" : ", ") + std::string(buffer);
-                  }
-                return "stalled: the forward solves of the last " +
-                       std::to_string(max_partial) +
-                       " updates reached equilibrium only part of the way (" +
-                       list +
-                       " of each) and the error did not improve on "
-                       "its best " +
-                       mm(best) + " (now " + mm(error) + ", iteration " + at +
-                       "); the last one stopped because " + failure;
-              }
-          }
-        if (since_best >= 10)
-          return "stagnated: the error has not improved by 1 % in 10 "
-                 "iterations (best " +
-                 mm(best) + ", tolerance " + mm(tolerance) + ")";
-        return "";
-      }
-
-      /// The error of the last accepted iterate (the initial one before any).
-      double
-      last() const
-      {
-        return previous;
-      }
-
-    private:
-      static constexpr unsigned int max_partial = 3;
-      const double                  initial, tolerance;
-      double                        previous, best;
-      unsigned int                  since_best = 0, increases = 0;
-      std::vector<double>           fractions; // partial run without gain
-    };
   } // namespace
 
   InverseProblem::InverseProblem(const InverseParameters &parameters,
@@ -170,8 +71,8 @@ namespace RestShape
     if (result.unreachable_nodes > 0)
       pcout << "Target: " << result.unreachable_nodes
             << " contact nodes of the image lie beyond the obstacle (by up to "
-            << mm(result.unreachable_max) << ", mean "
-            << mm(result.unreachable_mean)
+            << mm_text(result.unreachable_max) << ", mean "
+            << mm_text(result.unreachable_mean)
             << "); the iteration aims at the admissible target, those nodes "
                "projected onto it"
             << std::endl;
@@ -201,7 +102,7 @@ namespace RestShape
     pcout << "Target: the projection onto the obstacle inverts "
           << r.inverted_before << " cells; " << r.moved_nodes
           << " nodes near them follow their neighbours (" << r.sweeps
-          << " smoothing sweeps, moved by up to " << mm(r.largest_change)
+          << " smoothing sweeps, moved by up to " << mm_text(r.largest_change)
           << "); " << r.inverted_after << " cells still inverted, "
           << r.below_threshold
           << " below det(dx_target/dX) = " << TargetRelaxation::minimum_jacobian
@@ -248,11 +149,11 @@ namespace RestShape
         const auto [n_fixed, distance] = contact->fixed_plane_nodes();
         if (n_fixed > 0)
           contact_text += ", " + std::to_string(n_fixed) +
-                          " on fixed planes, up to " + mm(distance) +
+                          " on fixed planes, up to " + mm_text(distance) +
                           " off the obstacle";
       }
     pcout << "Inverse iteration " << iteration << ": mean error "
-          << mm(errors.first) << ", max " << mm(errors.second) << " ("
+          << mm_text(errors.first) << ", max " << mm_text(errors.second) << " ("
           << stats.newton_iterations << " Newton iterations"
           << (anderson ? ", Anderson step" : "") << contact_text << ")"
           << std::endl;
@@ -439,7 +340,7 @@ namespace RestShape
                  "invert " +
                  std::to_string(n_bad) + " cells, e.g. " + where +
                  " (iteration " + std::to_string(iteration) + ", error " +
-                 mm(last_error) + ")";
+                 mm_text(last_error) + ")";
         candidate = w;
         candidate.add(beta, f);
         pcout << "  The update would invert " << n_bad
@@ -617,7 +518,8 @@ namespace RestShape
               contact->set_state(contact_state);
             pcout << "  Anderson step rejected ("
                   << (stats.converged ?
-                        "error " + mm(error) + " > " + mm(stopping.last()) :
+                        "error " + mm_text(error) + " > " +
+                          mm_text(stopping.last()) :
                         "forward solve failed: " + stats.failure)
                   << "): plain update" << std::endl;
             ++result.rejected_steps;
@@ -645,7 +547,7 @@ namespace RestShape
     return finish(result,
                   "not converged after " +
                     std::to_string(parameters.max_iterations) +
-                    " iterations (error " + mm(stopping.last()) +
-                    ", tolerance " + mm(parameters.tolerance) + ")");
+                    " iterations (error " + mm_text(stopping.last()) +
+                    ", tolerance " + mm_text(parameters.tolerance) + ")");
   }
 } // namespace RestShape
