@@ -383,6 +383,13 @@ namespace RestShape
         summary.set("direct_inverse_jacobian_products",
                     long(inverse_result.direct.jacobian_products));
       }
+    if (const CarriedLoad &carried = inverse_result.carried; carried.share > 0)
+      {
+        summary.set("skull_load_share", carried.share);
+        summary.set("reference_skull_force_N", carried.reference_force.norm());
+        summary.set("reference_contact_nodes", long(carried.active_nodes));
+        summary.set("stated_skull_force_N", carried.stated_force.norm());
+      }
     summary.set("mean_error_mm", inverse_result.mean_error * mm_per_m);
     summary.set("max_error_mm", inverse_result.max_error * mm_per_m);
     if (contact)

@@ -545,6 +545,11 @@ namespace RestShape
           {e.section + "/" + e.entry, prm.get(e.entry), e.values});
         prm.leave_subsection();
       }
+    if (inverse.skull_load_share > 0 && contact.obstacle_file.empty())
+      throw InputError("",
+                       "Inverse problem/Skull load share",
+                       "there is no obstacle to carry a load: expected "
+                       "Contact/Obstacle file, or a share of 0");
     if (scenario.enabled && !inverse.enabled)
       throw InputError("",
                        "Scenario/Enabled",

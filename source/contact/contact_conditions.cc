@@ -185,6 +185,54 @@ namespace RestShape
     return shift;
   }
 
+  unsigned int
+  ContactProblem::keep_target_contacts(const VectorType &target_shift)
+  {
+    const VectorType t    = forward.ghosted_copy(target_shift);
+    unsigned int     kept = 0;
+    for (Candidate &c : candidates)
+      {
+        if (c.removed)
+          continue;
+        if (obstacle->gap(position(c.node, t)).gap <= gap_tolerance)
+          {
+            kept += c.owned;
+            continue;
+          }
+        c.removed = c.set_aside = true;
+        c.eligible = c.active = false;
+      }
+    constraints_changed = true;
+    return Utilities::MPI::sum(kept, communicator());
+  }
+
+  void
+  ContactProblem::restore_contact()
+  {
+    for (Candidate &c : candidates)
+      if (c.set_aside)
+        c.removed = c.set_aside = false;
+    constraints_changed = true;
+  }
+
+  VectorType
+  ContactProblem::target_forces(const VectorType &raw_residual,
+                                const VectorType &target_shift) const
+  {
+    const VectorType t      = forward.ghosted_copy(target_shift);
+    VectorType       forces = forward.zero_vector();
+    for (const Candidate &c : candidates)
+      if (c.owned && c.active)
+        {
+          const double lambda = std::max(0., contact_force(c, raw_residual));
+          const Gap    g      = obstacle->gap(position(c.node, t));
+          for (unsigned int k = 0; k < 3; ++k)
+            forces[c.node.dofs[k]] = lambda * g.gradient[k];
+        }
+    forces.compress(VectorOperation::insert);
+    return forces;
+  }
+
   std::vector<Tensor<1, 3>>
   ContactProblem::target_normals() const
   {

@@ -85,12 +85,27 @@ namespace RestShape
     , pcout(pcout)
   {}
 
+  void
+  DirectInverse::set_target(const VectorType &displacement,
+                            const VectorType &force)
+  {
+    target_displacement = displacement;
+    obstacle_force      = force;
+    const auto &fixed   = forward.base_constraints();
+    for (const auto i : forward.locally_owned_dofs())
+      if (fixed.is_constrained(i))
+        obstacle_force[i] = 0;
+    obstacle_force.compress(VectorOperation::insert);
+  }
+
   bool
   DirectInverse::residual(const VectorType &w, VectorType &r)
   {
     forward.set_state(d, w, load);
     const bool valid = forward.evaluate(false);
     r                = forward.condensed_residual();
+    if (obstacle_force.size() > 0)
+      r.add(fraction, obstacle_force);
     return valid;
   }
 
@@ -98,8 +113,10 @@ namespace RestShape
   DirectInverse::solve(const LoadState &scene_load, VectorType &rest)
   {
     result       = DirectInverseResult();
-    d            = forward.zero_vector();
+    d            = target_displacement.size() > 0 ? target_displacement :
+                                                    forward.zero_vector();
     load         = scene_load;
+    fraction     = 1;
     VectorType r = forward.zero_vector();
     if (!residual(rest, r))
       {
@@ -116,6 +133,7 @@ namespace RestShape
         const double s   = std::min(1., done + increment);
         VectorType   w   = rest;
         load             = between(LoadState(), scene_load, s);
+        fraction         = s;
         const bool final = (s == 1);
         if (newton(w, final ? final_reduction : step_tolerance, s))
           {

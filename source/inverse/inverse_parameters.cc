@@ -70,6 +70,22 @@ namespace RestShape
       "fails (large rotations) the fixed point starts from the target. "
       "fixed point: only the rest-shape iteration of Sellier and Morin et "
       "al. from the target (with Acceleration).");
+    prm.declare_entry(
+      "Skull load share",
+      "0",
+      Patterns::Double(0, 1),
+      "Where contact acts at the target the rest shape is not unique: the "
+      "obstacle may carry any part of the load there. 0 (the default): the "
+      "least-force rest shape, which the direct inverse finds (the fixed "
+      "labels carry the load; the obstacle force at the target is next to "
+      "zero). s > 0: the rest shape in which the obstacle carries s times "
+      "the reference contact forces, node by node: those of the body "
+      "stress-free at the (admissible) target settling under the scene's "
+      "loads onto the obstacle, with contact only where it touches at the "
+      "target (1: the load the fixed labels do not carry when the body is "
+      "stress-free there). Needs Method = direct and Contact/Obstacle "
+      "file. The fixed point's rest shape, from the target, carries about "
+      "what share 1 states (its first forward solve is the reference solve).");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(1, 20),
@@ -105,10 +121,17 @@ namespace RestShape
           max_tolerance = value * 1e-3;
         }
     }
-    max_iterations = prm.get_integer("Maximum iterations");
-    acceleration   = prm.get("Acceleration") == "none" ? Acceleration::none :
-                                                         Acceleration::anderson;
-    anderson_depth = prm.get_integer("Anderson depth");
+    max_iterations   = prm.get_integer("Maximum iterations");
+    acceleration     = prm.get("Acceleration") == "none" ? Acceleration::none :
+                                                           Acceleration::anderson;
+    anderson_depth   = prm.get_integer("Anderson depth");
+    skull_load_share = prm.get_double("Skull load share");
+    if (skull_load_share > 0 && method != Method::direct)
+      throw InputError("",
+                       "Inverse problem/Skull load share",
+                       "a rest shape that carries a stated skull load is "
+                       "found by the direct inverse: expected Method = "
+                       "direct, or a share of 0");
     prm.leave_subsection();
     if (enabled && !(tolerance > 0))
       throw InputError("",

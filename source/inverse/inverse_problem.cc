@@ -275,16 +275,23 @@ namespace RestShape
     // which the direct inverse does not model: it then solves for the
     // image without contact, and the fixed point takes its rest shape on
     // to the admissible target.
-    if (target_shift.linfty_norm() > 0)
+    const bool carries = result.carried.share > 0;
+    if (target_shift.linfty_norm() > 0 && !carries)
       pcout << "  Direct inverse: at the image, without contact (the fixed "
                "point then aims at the admissible target)"
             << std::endl;
     rest = forward.owned_copy(initial_rest);
+    // Aiming at the admissible target, start stress-free there.
+    if (carries && rest.linfty_norm() == 0)
+      rest = target_shift;
     if (contact != nullptr)
       contact->reset(); // contact is not part of the direct inverse
     {
       TimerOutput::Scope scope(timer, "Direct inverse");
-      result.direct = DirectInverse(forward, pcout).solve(load, rest);
+      DirectInverse      inverse(forward, pcout);
+      if (carries)
+        inverse.set_target(target_shift, result.carried.forces);
+      result.direct = inverse.solve(load, rest);
     }
     const DirectInverseResult &r = result.direct;
     pcout << "  Direct inverse: "
@@ -415,14 +422,33 @@ namespace RestShape
     // rest shape, Newton from the target at the full load.
     VectorType        direct_rest, target_guess;
     const VectorType *rest = &initial_rest;
+    if (direct && parameters.skull_load_share > 0 && contact != nullptr)
+      {
+        TimerOutput::Scope scope(timer, "Reference contact solve");
+        result.carried = carried_load(
+          forward, *contact, target_shift, load, parameters.skull_load_share);
+        pcout << result.carried.text() << std::endl;
+        if (!result.carried.converged)
+          return finish(result,
+                        "no load-carrying rest shape: the reference contact "
+                        "solve did not converge (" +
+                          result.carried.failure + ")");
+      }
     if (direct)
       {
         if (direct_inverse(initial_rest, load, result, direct_rest))
           {
-            rest         = &direct_rest;
-            target_guess = forward.zero_vector();
-            guess        = &target_guess;
+            rest = &direct_rest;
+            // Newton from the target (admissible, where it carries).
+            target_guess =
+              result.carried.share > 0 ? target_shift : forward.zero_vector();
+            guess = &target_guess;
           }
+        else if (result.carried.share > 0)
+          return finish(result,
+                        "no load-carrying rest shape found: the direct "
+                        "inverse failed (" +
+                          result.direct.failure + ")");
         else if (overloaded)
           return finish(result,
                         load_path_failure("no rest shape found: the direct "

@@ -269,6 +269,9 @@ namespace RestShape
       fixed_point,
       direct
     } method = Method::fixed_point;
+    /// The share of the reference contact forces the obstacle carries at
+    /// the target (0: the least-force rest shape).
+    double skull_load_share = 0;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -120,6 +120,26 @@ namespace RestShape
      */
     unsigned int
     remove_contact(const Region &opening);
+    /**
+     * Until restore_contact(), only the candidates that touch the obstacle
+     * at the target (the mesh geometry moved by @p target_shift, owned, m:
+     * gap <= gap tolerance) may take contact; the others are removed as by
+     * remove_contact(). Returns how many keep it (all ranks).
+     */
+    unsigned int
+    keep_target_contacts(const VectorType &target_shift);
+    /// Undo keep_target_contacts() (the openings of remove_contact() stay).
+    void
+    restore_contact();
+    /**
+     * The obstacle's forces on the active nodes at the state of the last
+     * update, turned normal to the obstacle at the target (the mesh
+     * geometry moved by @p target_shift): max(0, lambda_i) n_i at the
+     * node's DoFs (owned, N; zero elsewhere).
+     */
+    VectorType
+    target_forces(const VectorType &raw_residual,
+                  const VectorType &target_shift) const;
 
     /// The active and eligible flags of every candidate: saved with an
     /// equilibrium, restored with it when a step is taken back.
@@ -321,6 +341,7 @@ namespace RestShape
       /// distance along their mean normal for the rest of the solve.
       bool follow_surface = false;
       bool removed        = false; // in an opening (remove_contact())
+      bool set_aside      = false; // by keep_target_contacts()
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its
       /// pull accepted (not released again in this solve).

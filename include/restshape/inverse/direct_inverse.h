@@ -25,9 +25,9 @@ namespace RestShape
   /**
    * Find the rest displacement w = X_rest - X (X: the mesh, which is the
    * target) for which the target is in equilibrium under @p load:
-   * R(d = 0; w) = 0, R the forward residual (external
-   * minus internal forces, with every load, support and constraint of the
-   * forward problem; contact is not part of it). Newton's method in w,
+   * R(d = 0; w) = 0 (or at the target of set_target()), R the forward residual
+   * (external minus internal forces, with every load, support and constraint of
+   * the forward problem; contact is not part of it). Newton's method in w,
    * Jacobian-free: the product with dR/dw is a finite difference of two
    * residual assemblies, solved by right-preconditioned GMRES with the
    * factorised forward tangent dR/dd (for small strains dR/dw = -dR/dd,
@@ -47,6 +47,16 @@ namespace RestShape
     /// problem is left in the state of the last residual assembly.
     DirectInverseResult
     solve(const LoadState &load, VectorType &rest);
+
+    /**
+     * Aim solve() at the target X + @p displacement (owned, m; by default
+     * the mesh, zero), where the obstacle holds the body with the nodal
+     * forces @p obstacle_force (owned, N; scaled with the load in the
+     * continuation, zero at the fixed DoFs): R(d; w) + f_obstacle = 0.
+     */
+    void
+    set_target(const VectorType &displacement,
+               const VectorType &obstacle_force);
 
   private:
     struct Jacobian;
@@ -71,7 +81,9 @@ namespace RestShape
     ForwardProblem             &forward;
     dealii::ConditionalOStream &pcout;
     LoadState                   load;
-    VectorType                  d; // the displacement at the target: zero
+    VectorType                  d; // the displacement at the target
+    VectorType                  target_displacement, obstacle_force;
+    double                      fraction  = 1; // of the load, in continuation
     double                      reference = 1; // |R| at the start, full load
     DirectInverseResult         result;
   };

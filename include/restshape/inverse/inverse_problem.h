@@ -11,6 +11,7 @@
 #include <restshape/contact/target_relaxation.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/inverse/anderson.h>
+#include <restshape/inverse/carried_load.h>
 #include <restshape/inverse/direct_inverse.h>
 #include <restshape/io/output.h>
 
@@ -54,6 +55,9 @@ namespace RestShape
     TargetRelaxationResult relaxation;
     /// The direct inverse before the fixed point (Method = direct).
     DirectInverseResult direct;
+    /// Skull load share > 0: the reference contact solve and the load the
+    /// rest shape carries.
+    CarriedLoad carried;
   };
 
   /**

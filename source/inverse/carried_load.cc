@@ -1,0 +1,61 @@
+// The reference contact solve of a load-carrying rest shape.
+#include <restshape/base/input_error.h>
+#include <restshape/inverse/carried_load.h>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  CarriedLoad
+  carried_load(ForwardProblem   &forward,
+               ContactProblem   &contact,
+               const VectorType &target_shift,
+               const LoadState  &load,
+               const double      share)
+  {
+    CarriedLoad result;
+    result.share          = share;
+    result.touching_nodes = contact.keep_target_contacts(target_shift);
+    contact.reset();
+    // Stress-free at the target: the rest shape is the target itself.
+    forward.set_state(target_shift, target_shift, LoadState());
+    const SolveStatistics stats = forward.solve(load, target_shift);
+    result.converged            = stats.converged;
+    result.failure              = stats.failure;
+    result.newton_iterations    = stats.newton_iterations;
+    if (stats.converged)
+      {
+        const VectorType &r    = forward.raw_residual();
+        result.reference_force = contact.total_force(r);
+        result.active_nodes    = contact.n_active();
+        result.forces          = contact.target_forces(r, target_shift);
+        result.forces *= share;
+        const MPI_Comm comm = forward.dof_handler().get_communicator();
+        for (const Node &node : forward.owned_nodes())
+          for (unsigned int k = 0; k < 3; ++k)
+            result.stated_force[k] += result.forces[node.dofs[k]];
+        for (unsigned int k = 0; k < 3; ++k)
+          result.stated_force[k] =
+            Utilities::MPI::sum(result.stated_force[k], comm);
+      }
+    contact.restore_contact();
+    contact.reset();
+    return result;
+  }
+
+  std::string
+  CarriedLoad::text() const
+  {
+    const std::string head =
+      "Skull load: the body stress-free at the target, settling under the "
+      "loads with contact at the " +
+      std::to_string(touching_nodes) + " nodes touching the obstacle there";
+    if (!converged)
+      return head + ", did not converge (" + failure + ")";
+    return head + ", rests on " + std::to_string(active_nodes) +
+           " of them with " + number_text(reference_force.norm()) +
+           " N; the rest shape carries " + number_text(share) +
+           " of it: " + number_text(stated_force.norm()) + " N (" +
+           std::to_string(newton_iterations) + " Newton steps)";
+  }
+} // namespace RestShape
