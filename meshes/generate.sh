@@ -18,6 +18,8 @@ $gen --hemisphere 50 --refinements 2 --grading 2 --cell-type hexahedra --out mes
 surf=${SURFACE:-build/restshape-surface}
 $surf --box -20,-20,-10 --size 60,60,10 --out meshes/floor.off
 $surf --box -20,-20,50 --size 60,60,10 --out meshes/ceiling.off
+$surf --sphere 0,0,50 --radius 50.5 --subdivisions 3 --out meshes/dome_cavity.off
+$surf --sphere 0,0,0 --radius 15 --subdivisions 3 --out meshes/opening_pole.off
 $surf --box -100,-100,-20 --size 200,200,20 --out meshes/floor_large.off
 $surf --box -5,-5,-20 --size 104.5,20,40 --out meshes/cavity_box.off
 $surf --box -5,-5,5 --size 30,30,60 --out meshes/column_cut_box.off

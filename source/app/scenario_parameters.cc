@@ -4,6 +4,7 @@
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameters.h>
+#include <restshape/contact/obstacle.h>
 
 #include <cmath>
 
@@ -65,9 +66,12 @@ namespace RestShape
       "Craniotomy",
       "",
       Patterns::Anything(),
-      "An opening of the skull: 'sphere: x, y, z, r' or 'cylinder: x, y, "
+      "An opening of the skull: 'sphere: x, y, z, r', 'cylinder: x, y, "
       "z, ax, ay, az, r' (centre, axis direction and radius in the mesh's "
-      "length unit; the cylinder is unbounded along its axis). Surface "
+      "length unit; the cylinder is unbounded along its axis) or 'surface: "
+      "FILE' (the inside of a closed, outward-oriented surface, .off, .stl "
+      "or .obj, in the mesh's length unit, e.g. drawn over the skull in a "
+      "segmentation tool). Surface "
       "nodes of the contact labels inside it lose their contact with the "
       "skull (tissue may bulge through), and the pressure faces inside it "
       "(by their centre, mesh geometry) are at atmospheric pressure: they "
@@ -116,5 +120,24 @@ namespace RestShape
       parse_vector(prm.get("Tissue body force"), "Scenario/Tissue body force");
     craniotomy = parse_region(prm.get("Craniotomy"), "Scenario/Craniotomy");
     prm.leave_subsection();
+  }
+
+  void
+  ScenarioParameters::read_surfaces()
+  {
+    if (craniotomy.shape != Region::Shape::surface)
+      return;
+    try
+      {
+        const auto surface = std::make_shared<const Obstacle>(craniotomy.file,
+                                                              craniotomy.unit,
+                                                              /*inside=*/true);
+        craniotomy.inside  = std::make_shared<const Region::InsideTest>(
+          [surface](const Point<3> &x) { return surface->gap(x).gap >= 0; });
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(craniotomy.file, "Scenario/Craniotomy", e.message);
+      }
   }
 } // namespace RestShape

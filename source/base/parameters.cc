@@ -538,6 +538,8 @@ namespace RestShape
     loads.fluid_level *= mesh.length_unit;
     scenario.fluid_level *= mesh.length_unit;
     scenario.craniotomy.scale(mesh.length_unit);
+    if (scenario.enabled)
+      scenario.read_surfaces();
     for (const LabelListEntry &e : label_list_entries)
       {
         prm.enter_subsection(e.section);

@@ -1,4 +1,5 @@
 // A region of space given in a scene file.
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/command_line.h>
@@ -16,8 +17,10 @@ namespace RestShape
   namespace
   {
     const std::string region_format =
-      "expected 'sphere: x, y, z, r' or 'cylinder: x, y, z, ax, ay, az, r' "
-      "(centre, axis direction and radius in the mesh's length unit)";
+      "expected 'sphere: x, y, z, r', 'cylinder: x, y, z, ax, ay, az, r' "
+      "(centre, axis direction and radius in the mesh's length unit) or "
+      "'surface: FILE' (a closed surface, .off, .stl or .obj, in the mesh's "
+      "length unit)";
   } // namespace
 
   bool
@@ -30,6 +33,10 @@ namespace RestShape
           return r.norm() <= radius;
         case Shape::cylinder:
           return (r - (r * axis) * axis).norm() <= radius;
+        case Shape::surface:
+          AssertThrow(inside,
+                      ExcMessage("the surface " + file + " was not read"));
+          return (*inside)(x);
         case Shape::none:
           break;
       }
@@ -41,6 +48,7 @@ namespace RestShape
   {
     center *= factor;
     radius *= factor;
+    unit *= factor;
   }
 
   std::string
@@ -54,6 +62,8 @@ namespace RestShape
     };
     if (shape == Shape::none)
       return "none";
+    if (shape == Shape::surface)
+      return "inside of the surface " + file;
     out << (shape == Shape::sphere ? "sphere at " : "cylinder through ");
     point(center, unit);
     if (shape == Shape::cylinder)
@@ -76,6 +86,14 @@ namespace RestShape
     if (colon == std::string::npos)
       throw InputError("", parameter, "'" + trimmed + "': " + region_format);
     const std::string shape = Utilities::trim(trimmed.substr(0, colon));
+    if (shape == "surface")
+      {
+        region.shape = Region::Shape::surface;
+        region.file  = Utilities::trim(trimmed.substr(colon + 1));
+        if (region.file.empty())
+          throw InputError("", parameter, "no file given; " + region_format);
+        return region;
+      }
     const std::vector<std::string> fields =
       Utilities::split_string_list(trimmed.substr(colon + 1), ',');
     std::vector<double> v;

@@ -299,6 +299,11 @@ namespace RestShape
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+    /// Read the craniotomy's surface file (Craniotomy = 'surface: FILE',
+    /// after Region::scale()): its inside test. Throws InputError naming
+    /// the file and Scenario/Craniotomy.
+    void
+    read_surfaces();
   };
 
   /// All subsections together: what a scene file describes.

@@ -1,18 +1,23 @@
-// A region of space given in a scene file: a ball or an unbounded cylinder.
+// A region of space given in a scene file: a ball, an unbounded cylinder or
+// the inside of a closed surface file.
 #ifndef restshape_base_region_h
 #define restshape_base_region_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace RestShape
 {
   /**
-   * A ball (centre, radius) or an unbounded circular cylinder (a point of
-   * its axis, the axis direction, radius), in the unit it was given in
-   * until scale() converts it (to metres).
+   * A ball (centre, radius), an unbounded circular cylinder (a point of
+   * its axis, the axis direction, radius) or the inside of a closed
+   * surface file, in the unit it was given in until scale() converts it
+   * (to metres). A surface's inside test is set by whoever reads the file
+   * (ScenarioParameters::read_surfaces(): the contact part does).
    */
   struct Region
   {
@@ -20,12 +25,18 @@ namespace RestShape
     {
       none,
       sphere,
-      cylinder
+      cylinder,
+      surface
     };
-    Shape                shape = Shape::none;
-    dealii::Point<3>     center;
-    dealii::Tensor<1, 3> axis; // unit vector (cylinder)
-    double               radius = 0;
+    using InsideTest = std::function<bool(const dealii::Point<3> &)>;
+
+    Shape                             shape = Shape::none;
+    dealii::Point<3>                  center;
+    dealii::Tensor<1, 3>              axis; // unit vector (cylinder)
+    double                            radius = 0;
+    std::string                       file;     // surface
+    double                            unit = 1; // surface: metres per file unit
+    std::shared_ptr<const InsideTest> inside;   // surface, once read
 
     bool
     defined() const
@@ -45,8 +56,9 @@ namespace RestShape
   };
 
   /**
-   * 'sphere: x, y, z, r' or 'cylinder: x, y, z, ax, ay, az, r' (lengths in
-   * the unit of the text); an empty text gives no region. Throws InputError
+   * 'sphere: x, y, z, r', 'cylinder: x, y, z, ax, ay, az, r' (lengths in
+   * the unit of the text) or 'surface: FILE'; an empty text gives no
+   * region. Throws InputError
    * naming @p parameter with the expected format.
    */
   Region
