@@ -17,6 +17,14 @@ namespace RestShape
     result.share          = share;
     result.touching_nodes = contact.keep_target_contacts(target_shift);
     contact.reset();
+    if (result.touching_nodes == 0)
+      {
+        // Nothing can carry a load: the least-force rest shape.
+        contact.restore_contact();
+        result.converged = true;
+        result.forces    = forward.zero_vector();
+        return result;
+      }
     // Stress-free at the target: the rest shape is the target itself.
     forward.set_state(target_shift, target_shift, LoadState());
     const SolveStatistics stats = forward.solve(load, target_shift);
@@ -50,6 +58,9 @@ namespace RestShape
       "Skull load: the body stress-free at the target, settling under the "
       "loads with contact at the " +
       std::to_string(touching_nodes) + " nodes touching the obstacle there";
+    if (touching_nodes == 0)
+      return "Skull load: no node touches the obstacle at the target: it "
+             "carries nothing there (the least-force rest shape)";
     if (!converged)
       return head + ", did not converge (" + failure + ")";
     return head + ", rests on " + std::to_string(active_nodes) +
