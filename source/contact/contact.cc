@@ -320,22 +320,6 @@ namespace RestShape
       }
   }
 
-  unsigned int
-  ContactProblem::remove_contact(const Region &opening)
-  {
-    unsigned int removed = 0;
-    for (Candidate &c : candidates)
-      if (opening.contains(c.node.position))
-        {
-          c.removed  = true;
-          c.eligible = false;
-          c.active   = false;
-          removed += c.owned;
-        }
-    constraints_changed = true;
-    return Utilities::MPI::sum(removed, communicator());
-  }
-
   void
   ContactProblem::reset()
   {

@@ -185,6 +185,33 @@ namespace RestShape
     return shift;
   }
 
+  namespace
+  {
+    /// A candidate that may no longer take contact.
+    template <typename Candidate>
+    void
+    take_out(Candidate &c)
+    {
+      c.removed  = true;
+      c.eligible = false;
+      c.active   = false;
+    }
+  } // namespace
+
+  unsigned int
+  ContactProblem::remove_contact(const Region &opening)
+  {
+    unsigned int removed = 0;
+    for (Candidate &c : candidates)
+      if (opening.contains(c.node.position))
+        {
+          take_out(c);
+          removed += c.owned;
+        }
+    constraints_changed = true;
+    return Utilities::MPI::sum(removed, communicator());
+  }
+
   unsigned int
   ContactProblem::keep_target_contacts(const VectorType &target_shift)
   {
@@ -199,8 +226,8 @@ namespace RestShape
             kept += c.owned;
             continue;
           }
-        c.removed = c.set_aside = true;
-        c.eligible = c.active = false;
+        take_out(c);
+        c.set_aside = true;
       }
     constraints_changed = true;
     return Utilities::MPI::sum(kept, communicator());
@@ -214,6 +241,7 @@ namespace RestShape
         c.removed = c.set_aside = false;
     constraints_changed = true;
   }
+
 
   VectorType
   ContactProblem::target_forces(const VectorType &raw_residual,

@@ -42,9 +42,7 @@ namespace RestShape
         for (const Node &node : forward.owned_nodes())
           for (unsigned int k = 0; k < 3; ++k)
             result.stated_force[k] += result.forces[node.dofs[k]];
-        for (unsigned int k = 0; k < 3; ++k)
-          result.stated_force[k] =
-            Utilities::MPI::sum(result.stated_force[k], comm);
+        result.stated_force = Utilities::MPI::sum(result.stated_force, comm);
       }
     contact.restore_contact();
     contact.reset();
