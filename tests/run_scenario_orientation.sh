@@ -10,16 +10,19 @@
 # force; an axis mixed up anywhere (a rotation applied in the wrong frame
 # or order, a level or fixed component left behind) would not.
 #
-# usage: run_scenario_orientation.sh RESTSHAPE OUTPUT_DIRECTORY
+# usage: run_scenario_orientation.sh RESTSHAPE OUTPUT_DIRECTORY [--set ...]
+# (further arguments go to both runs: e.g. the fluid as a hydrostatic
+# pressure, whose free surface must turn with the scene as well)
 set -u
 exe=$1
 out=$2
+shift 2
 here=$(dirname "$0")
 rm -rf "$out"
 mkdir -p "$out"
 /usr/bin/python3 "$here/rotate_scene.py" meshes/block_tet.msh meshes/floor.off "$out" ||
   { echo "FAIL: cannot turn the scene"; exit 1; }
-common=(--set "Output/Write VTU=false")
+common=(--set "Output/Write VTU=false" "$@")
 "$exe" "${common[@]}" --set "Output/Directory=$out/upright" \
   --set "Scenario/Gravity rotation=0, 20, 0" tests/scenes/block_drained.prm >"$out/upright.log" 2>&1 ||
   { echo "FAIL: the upright run failed"; tail -n 20 "$out/upright.log"; exit 1; }

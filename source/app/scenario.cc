@@ -59,11 +59,26 @@ namespace RestShape
   } // namespace
 
   LoadState
-  changed_load(const ScenarioParameters &p, const LoadState &scene)
+  changed_load(const ScenarioParameters &p,
+               const LoadParameters     &loads,
+               const LoadState          &scene,
+               const FreeSurface        &free_surface)
   {
     LoadState changed    = scene;
     changed.acceleration = rotation(p.rotation_degrees) * scene.acceleration;
-    if (p.has_fluid_level)
+    const bool turned    = p.rotation_degrees.norm_square() > 0;
+    if (loads.hydrostatic && (turned || p.has_fluid_level))
+      {
+        // The fluid's pressure turns with gravity, about its level.
+        const Point<3> level =
+          p.has_fluid_level     ? p.fluid_level :
+          loads.has_fluid_level ? loads.fluid_level :
+                                  free_surface(changed.acceleration);
+        changed.fluid.clear();
+        if (changed.acceleration.norm_square() > 0)
+          changed.fluid.push_back({changed.acceleration, level, 1.});
+      }
+    else if (p.has_fluid_level)
       {
         changed.drained_acceleration = changed.acceleration;
         changed.fluid_level          = p.fluid_level;
@@ -71,19 +86,23 @@ namespace RestShape
     if (p.has_pressure)
       changed.pressure = p.pressure;
     changed.tissue_acceleration += p.tissue_acceleration;
-    // The opening is at atmospheric pressure: its faces lose the uniform
-    // pressure that acts after the change.
+    // The opening is at atmospheric pressure: its faces lose the pressure
+    // that acts after the change.
     if (p.craniotomy.defined())
-      changed.opening_pressure = changed.pressure;
+      {
+        changed.opening_pressure = changed.pressure;
+        changed.opening_fluid    = changed.fluid;
+      }
     return changed;
   }
 
   void
-  check_craniotomy(const Parameters   &parameters,
-                   const LabelledMesh &mesh,
-                   const MPI_Comm      comm)
+  check_craniotomy(const Parameters         &parameters,
+                   const ScenarioParameters &p,
+                   const LabelledMesh       &mesh,
+                   const MPI_Comm            comm)
   {
-    const Region &opening = parameters.scenario.craniotomy;
+    const Region &opening = p.craniotomy;
     if (!opening.defined())
       return;
     // Surface faces of the body (mesh geometry) whose centre lies inside.
@@ -96,7 +115,7 @@ namespace RestShape
     if (Utilities::MPI::sum(faces, comm) == 0)
       throw InputError(
         "",
-        "Scenario/Craniotomy",
+        p.section() + "/Craniotomy",
         "the " +
           opening.text(parameters.mesh.length_unit,
                        parameters.mesh.length_unit_name) +
@@ -106,21 +125,21 @@ namespace RestShape
   }
 
   void
-  check_scenario(const Parameters   &parameters,
-                 const LabelledMesh &mesh,
-                 const MPI_Comm      comm)
+  check_fluid_level(const Parameters         &parameters,
+                    const ScenarioParameters &p,
+                    const LabelledMesh       &mesh,
+                    const MPI_Comm            comm)
   {
-    const ScenarioParameters &p = parameters.scenario;
-    LoadState                 scene;
-    scene.acceleration      = parameters.loads.gravity;
-    const LoadState changed = changed_load(p, scene);
-    check_craniotomy(parameters, mesh, comm);
-    if (!p.has_fluid_level)
-      return;
+    LoadState scene;
+    scene.acceleration = parameters.loads.gravity;
+    const LoadState changed =
+      changed_load(p, parameters.loads, scene, [&](const Tensor<1, 3> &) {
+        return p.fluid_level;
+      });
     const Tensor<1, 3> g = changed.acceleration;
     if (g.norm() == 0)
       throw InputError("",
-                       "Scenario/Fluid level",
+                       p.section() + "/Fluid level",
                        "without gravity no level is defined; expected "
                        "Loads/Gravity != 0");
     // Height of the body's highest vertex above the level (m).
@@ -131,11 +150,24 @@ namespace RestShape
     if (top <= 0)
       throw InputError(
         "",
-        "Scenario/Fluid level",
+        p.section() + "/Fluid level",
         "the level lies " + number_text(-top / parameters.mesh.length_unit) +
           " " + parameters.mesh.length_unit_name +
           " above the body's highest point (against gravity): nothing is "
           "drained; expected a point below the top of the body");
+  }
+
+  void
+  check_scenario(const Parameters   &parameters,
+                 const LabelledMesh &mesh,
+                 const MPI_Comm      comm)
+  {
+    for (const ScenarioParameters &p : parameters.scenarios)
+      {
+        check_craniotomy(parameters, p, mesh, comm);
+        if (p.has_fluid_level)
+          check_fluid_level(parameters, p, mesh, comm);
+      }
   }
 
   std::map<Label, TissueShift>
@@ -201,12 +233,14 @@ namespace RestShape
   }
 
   Scenario::Scenario(const Parameters                 &parameters,
+                     const ScenarioParameters         &scenario,
                      ForwardProblem                   &forward,
                      ContactProblem                   *contact,
                      OutputWriter                     &output,
                      Summary                          &summary,
                      const dealii::ConditionalOStream &pcout)
     : parameters(parameters)
+    , scenario(scenario)
     , forward(forward)
     , contact(contact)
     , output(output)
@@ -217,7 +251,7 @@ namespace RestShape
   std::string
   Scenario::description(const LoadState &scene, const LoadState &changed) const
   {
-    const ScenarioParameters &p = parameters.scenario;
+    const ScenarioParameters &p = scenario;
     std::string               text;
     const auto                add = [&](const std::string &part) {
       text += (text.empty() ? "" : "; ") + part;
@@ -246,6 +280,12 @@ namespace RestShape
     return text.empty() ? "no change" : text;
   }
 
+  std::string
+  Scenario::key(const std::string &what) const
+  {
+    return scenario.output_name() + "_" + what;
+  }
+
   void
   Scenario::run(const Failure &fail)
   {
@@ -253,21 +293,27 @@ namespace RestShape
     const VectorType d_eq    = forward.owned_copy(forward.displacement());
     const VectorType w_rest  = forward.owned_copy(forward.rest_displacement());
     const LoadState  scene   = forward.load();
-    const LoadState  changed = changed_load(parameters.scenario, scene);
-    const Region    &opening = parameters.scenario.craniotomy;
+    const LoadState  changed = changed_load(
+      scenario, parameters.loads, scene, [this](const Tensor<1, 3> &a) {
+        return forward.highest_pressure_point(a);
+      });
+    ContactProblem::State equilibrium_set;
+    if (contact != nullptr)
+      equilibrium_set = contact->state();
+    const Region &opening = scenario.craniotomy;
     if (opening.defined())
       {
         opened_faces = forward.open_surface(opening);
         if (contact != nullptr)
           opened_nodes = contact->remove_contact(opening);
-        summary.set("scenario_craniotomy_freed_contact_nodes",
-                    long(opened_nodes));
-        summary.set("scenario_craniotomy_pressure_faces", long(opened_faces));
+        summary.set(key("craniotomy_freed_contact_nodes"), long(opened_nodes));
+        summary.set(key("craniotomy_pressure_faces"), long(opened_faces));
       }
     ContactProblem::State start_set;
     if (contact != nullptr)
       start_set = contact->state();
-    pcout << "Scenario: " << description(scene, changed) << std::endl;
+    pcout << scenario.section() << ": " << description(scene, changed)
+          << std::endl;
 
     pcout << "  pre-stressed model: the scene's loads -> the changed loads"
           << std::endl;
@@ -281,10 +327,10 @@ namespace RestShape
     // (its contact set and normals; the stress-free solve changes them).
     const SolveReductions r = compute_reductions(
       forward, contact, u1, forward.dof_handler().get_communicator());
-    summary.set("scenario_external_force_N", r.external);
-    summary.set("scenario_support_reaction_N", r.reaction);
-    summary.set("scenario_contact_force_N", r.contact);
-    summary.set("scenario_elastic_support_force_N", r.support);
+    summary.set(key("external_force_N"), r.external);
+    summary.set(key("support_reaction_N"), r.reaction);
+    summary.set(key("contact_force_N"), r.contact);
+    summary.set(key("elastic_support_force_N"), r.support);
     VectorType contact_fields;
     if (contact != nullptr)
       contact_fields =
@@ -309,11 +355,20 @@ namespace RestShape
     forward.set_state(d1, w_rest, changed);
     if (contact != nullptr)
       contact->set_state(end_set);
-    summary.set("scenario_newton_iterations_prestressed",
+    summary.set(key("newton_iterations_prestressed"),
                 long(s1.newton_iterations));
-    summary.set("scenario_newton_iterations_stress_free",
+    summary.set(key("newton_iterations_stress_free"),
                 long(s2.newton_iterations));
     report(u1, u2, contact_fields);
+
+    // Back at the equilibrium, the skull closed, for the next scenario.
+    forward.open_surface(Region());
+    if (contact != nullptr)
+      {
+        contact->close_openings();
+        contact->set_state(equilibrium_set);
+      }
+    forward.set_state(d_eq, w_rest, scene);
   }
 
   void
@@ -329,7 +384,7 @@ namespace RestShape
     const auto       ratio       = [](const double x, const double y) {
       return x > least_shift ? y / x : 0.;
     };
-    output.write_text("scenario.csv", [&](std::ostream &out) {
+    output.write_text(scenario.output_name() + ".csv", [&](std::ostream &out) {
       out << std::setprecision(6)
           << "tissue,label,volume_ml,"
              "prestressed_centroid_x_mm,prestressed_centroid_y_mm,"
@@ -358,10 +413,10 @@ namespace RestShape
     });
     const auto [mean1, max1] = forward.nodal_norms(prestressed);
     const auto [mean2, max2] = forward.nodal_norms(stress_free);
-    summary.set("scenario_prestressed_mean_shift_mm", mean1 * mm_per_m);
-    summary.set("scenario_prestressed_max_shift_mm", max1 * mm_per_m);
-    summary.set("scenario_stress_free_mean_shift_mm", mean2 * mm_per_m);
-    summary.set("scenario_stress_free_max_shift_mm", max2 * mm_per_m);
+    summary.set(key("prestressed_mean_shift_mm"), mean1 * mm_per_m);
+    summary.set(key("prestressed_max_shift_mm"), max1 * mm_per_m);
+    summary.set(key("stress_free_mean_shift_mm"), mean2 * mm_per_m);
+    summary.set(key("stress_free_max_shift_mm"), max2 * mm_per_m);
     const auto row = [&](const std::string &what, double x, double y) {
       std::ostringstream line;
       line << "  " << std::left << std::setw(24) << what.substr(0, 24)
@@ -399,6 +454,6 @@ namespace RestShape
            ""});
       }
     if (parameters.output.write_vtu)
-      output.write_fields(forward, 0, 0, fields, {}, "scenario");
+      output.write_fields(forward, 0, 0, fields, {}, scenario.output_name());
   }
 } // namespace RestShape

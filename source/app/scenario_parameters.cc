@@ -19,12 +19,13 @@ namespace RestShape
   } // namespace
 
   void
-  ScenarioParameters::declare_parameters(ParameterHandler &prm)
+  ScenarioParameters::declare_parameters(ParameterHandler  &prm,
+                                         const std::string &name)
   {
-    prm.enter_subsection("Scenario");
+    prm.enter_subsection(name.empty() ? "Scenario" : "Scenario " + name);
     prm.declare_entry(
       "Enabled",
-      "false",
+      name.empty() ? "false" : "true",
       Patterns::Bool(),
       "After the inverse problem, change the loads as given below and "
       "solve (1) the pre-stressed model, from its equilibrium under the "
@@ -32,7 +33,12 @@ namespace RestShape
       "the same geometry and contact state (the pre-stressed model's "
       "equilibrium), under the change alone. Writes scenario.csv (shift of "
       "every tissue's centroid and its largest nodal shift, both models, "
-      "and their ratio) and scenario.vtu (both shift fields).");
+      "and their ratio) and scenario.vtu (both shift fields). Further "
+      "scenarios of the same run: a subsection 'Scenario NAME' each (NAME of "
+      "letters, digits, '-' and '_'), with the entries of this one (Enabled "
+      "= true by default there), run in the order written, each from the "
+      "same equilibrium; they write scenario_NAME.csv and scenario_NAME.vtu "
+      "and their summary keys start with scenario_NAME_.");
     prm.declare_entry("Gravity rotation",
                       "0, 0, 0",
                       Patterns::Anything(),
@@ -45,9 +51,15 @@ namespace RestShape
                       Patterns::Anything(),
                       "CSF drained to a level: a point 'x, y, z' (mesh length "
                       "unit) of the new free surface, normal to gravity (the "
-                      "rotated one). Tissue above it (in the mesh geometry) "
-                      "loses its buoyancy. Empty: no drainage. Needs "
-                      "Loads/Fluid load = buoyancy.");
+                      "rotated one). With Loads/Fluid load = buoyancy, tissue "
+                      "above it (in the mesh geometry) loses its buoyancy; "
+                      "with hydrostatic pressure, the pressure faces above it "
+                      "are at atmospheric pressure (plus Surface pressure) "
+                      "and those below it carry rho_fluid g times their depth "
+                      "below it. Empty: no drainage (with hydrostatic "
+                      "pressure and a rotation: the free surface turns about "
+                      "Loads/Fluid level, or stays above the highest pressure "
+                      "face where that is empty).");
     prm.declare_entry(
       "Surface pressure",
       "",
@@ -80,24 +92,38 @@ namespace RestShape
     prm.leave_subsection();
   }
 
-  void
-  ScenarioParameters::parse_parameters(ParameterHandler &prm)
+  std::string
+  ScenarioParameters::section() const
   {
-    prm.enter_subsection("Scenario");
-    enabled = prm.get_bool("Enabled");
-    rotation_degrees =
-      parse_vector(prm.get("Gravity rotation"), "Scenario/Gravity rotation");
+    return name.empty() ? "Scenario" : "Scenario " + name;
+  }
+
+  std::string
+  ScenarioParameters::output_name() const
+  {
+    return name.empty() ? "scenario" : "scenario_" + name;
+  }
+
+  void
+  ScenarioParameters::parse_parameters(ParameterHandler  &prm,
+                                       const std::string &scenario_name)
+  {
+    name = scenario_name;
+    prm.enter_subsection(section());
+    enabled          = prm.get_bool("Enabled");
+    rotation_degrees = parse_vector(prm.get("Gravity rotation"),
+                                    section() + "/Gravity rotation");
     for (unsigned int d = 0; d < 3; ++d)
       if (std::abs(rotation_degrees[d]) > max_angle_degrees)
         throw InputError("",
-                         "Scenario/Gravity rotation",
+                         section() + "/Gravity rotation",
                          number_text(rotation_degrees[d]) +
                            " degrees; expected angles in degrees between "
                            "-360 and 360");
     const std::string level = Utilities::trim(prm.get("Fluid level"));
     has_fluid_level         = !level.empty();
     if (has_fluid_level)
-      fluid_level = Point<3>(parse_vector(level, "Scenario/Fluid level"));
+      fluid_level = Point<3>(parse_vector(level, section() + "/Fluid level"));
     const std::string pressure_text =
       Utilities::trim(prm.get("Surface pressure"));
     has_pressure = !pressure_text.empty();
@@ -105,20 +131,21 @@ namespace RestShape
       {
         try
           {
-            pressure = parse_number("Scenario/Surface pressure", pressure_text);
+            pressure =
+              parse_number(section() + "/Surface pressure", pressure_text);
           }
         catch (const InputError &)
           {
             throw InputError("",
-                             "Scenario/Surface pressure",
+                             section() + "/Surface pressure",
                              "'" + pressure_text +
                                "' is not a number; expected a pressure in "
                                "Pa or nothing (unchanged)");
           }
       }
-    tissue_acceleration =
-      parse_vector(prm.get("Tissue body force"), "Scenario/Tissue body force");
-    craniotomy = parse_region(prm.get("Craniotomy"), "Scenario/Craniotomy");
+    tissue_acceleration = parse_vector(prm.get("Tissue body force"),
+                                       section() + "/Tissue body force");
+    craniotomy = parse_region(prm.get("Craniotomy"), section() + "/Craniotomy");
     prm.leave_subsection();
   }
 
@@ -137,7 +164,23 @@ namespace RestShape
       }
     catch (const InputError &e)
       {
-        throw InputError(craniotomy.file, "Scenario/Craniotomy", e.message);
+        throw InputError(craniotomy.file, section() + "/Craniotomy", e.message);
       }
+  }
+
+  void
+  ScenarioParameters::check(const LoadParameters &loads,
+                            const bool            inverse_enabled) const
+  {
+    if (!inverse_enabled)
+      throw InputError("",
+                       section() + "/Enabled",
+                       "a scenario starts from the pre-stressed model: set "
+                       "Inverse problem/Enabled = true");
+    if (has_fluid_level && loads.fluid_density == 0)
+      throw InputError("",
+                       section() + "/Fluid level",
+                       "there is no fluid to drain: expected Loads/Fluid "
+                       "density > 0 in kg/m^3");
   }
 } // namespace RestShape

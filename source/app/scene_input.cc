@@ -3,7 +3,9 @@
 #include <restshape/app/scene_input.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
+#include <restshape/base/parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -63,8 +65,37 @@ namespace RestShape
      * until the stack overflowed), nesting stays below max_include_depth.
      * @p chain: the files being read, outermost first.
      */
+    /// The subsection that holds the first scenario; further ones are
+    /// "Scenario NAME".
+    const std::string scenario_section = "Scenario";
+
+    /// Add NAME of a subsection "Scenario NAME" (@p section) to @p names
+    /// once; InputError naming @p where for a NAME that cannot name files.
     void
-    check_includes(const std::string &file, std::vector<std::string> &chain)
+    add_scenario_name(const std::string        &section,
+                      const std::string        &where,
+                      std::vector<std::string> &names)
+    {
+      const std::string prefix = scenario_section + " ";
+      if (section.rfind(prefix, 0) != 0)
+        return;
+      const std::string name = Utilities::trim(section.substr(prefix.size()));
+      for (const char c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' &&
+            c != '-')
+          throw InputError(where,
+                           section,
+                           "a scenario's name names its output files: "
+                           "expected letters, digits, '-' and '_'");
+      if (!name.empty() &&
+          std::find(names.begin(), names.end(), name) == names.end())
+        names.push_back(name);
+    }
+
+    void
+    check_includes(const std::string        &file,
+                   std::vector<std::string> &chain,
+                   std::vector<std::string> &scenarios)
     {
       namespace fs = std::filesystem;
       std::ifstream in(file);
@@ -72,6 +103,10 @@ namespace RestShape
       for (unsigned int number = 1; std::getline(in, line); ++number)
         {
           line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            add_scenario_name(Utilities::trim(line.substr(11)),
+                              file + ":" + std::to_string(number),
+                              scenarios);
           if (line.rfind("include", 0) != 0 || line.size() < 8 ||
               !std::isspace(static_cast<unsigned char>(line[7])))
             continue;
@@ -95,13 +130,13 @@ namespace RestShape
             fail("includes nested more than " +
                  std::to_string(max_include_depth) + " deep");
           chain.push_back(name);
-          check_includes(name, chain);
+          check_includes(name, chain, scenarios);
           chain.pop_back();
         }
     }
   } // namespace
 
-  void
+  std::vector<std::string>
   read_scene(ParameterHandler               &prm,
              const std::string              &prm_file,
              const std::vector<std::string> &overrides)
@@ -109,8 +144,15 @@ namespace RestShape
     std::error_code ec;
     if (!std::filesystem::is_regular_file(prm_file, ec))
       throw InputError(prm_file, "", "no such scene file");
-    std::vector<std::string> chain = {prm_file};
-    check_includes(prm_file, chain);
+    std::vector<std::string> chain = {prm_file}, scenarios;
+    check_includes(prm_file, chain, scenarios);
+    for (const std::string &o : overrides)
+      add_scenario_name(Utilities::trim(
+                          o.substr(0, std::min(o.find('/'), o.find('=')))),
+                        "--set",
+                        scenarios);
+    for (const std::string &name : scenarios)
+      ScenarioParameters::declare_parameters(prm, name);
     try
       {
         prm.parse_input(prm_file, "", false, true);
@@ -123,5 +165,6 @@ namespace RestShape
       }
     for (const std::string &o : overrides)
       apply_override(prm, o);
+    return scenarios;
   }
 } // namespace RestShape

@@ -123,8 +123,8 @@ namespace RestShape
         forward->release_linear_solver();
         postprocess(cycle, stats);
       }
-    if (parameters.scenario.enabled)
-      run_scenario();
+    for (const ScenarioParameters &scenario : parameters.scenarios)
+      run_scenario(scenario);
     write_summary(stats);
     timer.print_summary();
   }
@@ -547,14 +547,22 @@ namespace RestShape
   }
 
   void
-  Simulator::run_scenario()
+  Simulator::run_scenario(const ScenarioParameters &parameters_of_scenario)
   {
-    Scenario scenario(
-      parameters, *forward, contact.get(), *output, summary, pcout);
+    Scenario          scenario(parameters,
+                      parameters_of_scenario,
+                      *forward,
+                      contact.get(),
+                      *output,
+                      summary,
+                      pcout);
+    const std::string section = parameters_of_scenario.name.empty() ?
+                                  "scenario" :
+                                  "scenario " + parameters_of_scenario.name;
     scenario.run(
-      [this](const SolveStatistics &stats, const std::string &model) {
+      [this, &section](const SolveStatistics &stats, const std::string &model) {
         SolveStatistics failed = stats;
-        failed.failure = "scenario, " + model + " model: " + stats.failure;
+        failed.failure = section + ", " + model + " model: " + stats.failure;
         write_summary(failed);
         throw SolverFailure("the " + failed.failure);
       });

@@ -44,7 +44,7 @@ namespace RestShape
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
     // (The mesh's part: once, before the forward problem exists.)
-    if (parameters.scenario.enabled && !forward)
+    if (!parameters.scenarios.empty() && !forward)
       try
         {
           check_scenario(parameters, *mesh, comm);

@@ -520,7 +520,8 @@ namespace RestShape
   }
 
   void
-  Parameters::parse_parameters(ParameterHandler &prm)
+  Parameters::parse_parameters(ParameterHandler               &prm,
+                               const std::vector<std::string> &scenario_names)
   {
     mesh.parse_parameters(prm);
     discretization.parse_parameters(prm);
@@ -533,13 +534,22 @@ namespace RestShape
     refinement.parse_parameters(prm);
     contact.parse_parameters(prm);
     inverse.parse_parameters(prm);
-    scenario.parse_parameters(prm);
     // The fluid levels are given in the mesh's length unit.
     loads.fluid_level *= mesh.length_unit;
-    scenario.fluid_level *= mesh.length_unit;
-    scenario.craniotomy.scale(mesh.length_unit);
-    if (scenario.enabled)
-      scenario.read_surfaces();
+    std::vector<std::string> names = {""};
+    names.insert(names.end(), scenario_names.begin(), scenario_names.end());
+    for (const std::string &name : names)
+      {
+        ScenarioParameters scenario;
+        scenario.parse_parameters(prm, name);
+        if (!scenario.enabled)
+          continue;
+        scenario.fluid_level *= mesh.length_unit;
+        scenario.craniotomy.scale(mesh.length_unit);
+        scenario.read_surfaces();
+        scenario.check(loads, inverse.enabled);
+        scenarios.push_back(scenario);
+      }
     for (const LabelListEntry &e : label_list_entries)
       {
         prm.enter_subsection(e.section);
@@ -552,28 +562,6 @@ namespace RestShape
                        "Inverse problem/Skull load share",
                        "there is no obstacle to carry a load: expected "
                        "Contact/Obstacle file, or a share of 0");
-    if (scenario.enabled && !inverse.enabled)
-      throw InputError("",
-                       "Scenario/Enabled",
-                       "a scenario starts from the pre-stressed model: set "
-                       "Inverse problem/Enabled = true");
-    const bool moves_fluid = scenario.has_fluid_level ||
-                             scenario.rotation_degrees.norm_square() > 0 ||
-                             scenario.craniotomy.defined();
-    if (scenario.enabled && moves_fluid && loads.hydrostatic)
-      throw InputError("",
-                       scenario.has_fluid_level ? "Scenario/Fluid level" :
-                       scenario.craniotomy.defined() ?
-                                                  "Scenario/Craniotomy" :
-                                                  "Scenario/Gravity rotation",
-                       "not available with Loads/Fluid load = hydrostatic "
-                       "pressure yet; expected Fluid load = buoyancy");
-    if (scenario.enabled && scenario.has_fluid_level &&
-        loads.fluid_density == 0)
-      throw InputError("",
-                       "Scenario/Fluid level",
-                       "there is no fluid to drain: expected Loads/Fluid "
-                       "density > 0 in kg/m^3");
   }
 
   void

@@ -206,10 +206,20 @@ namespace RestShape
       if (opening.contains(c.node.position))
         {
           take_out(c);
+          c.opened = true;
           removed += c.owned;
         }
     constraints_changed = true;
     return Utilities::MPI::sum(removed, communicator());
+  }
+
+  void
+  ContactProblem::close_openings()
+  {
+    for (Candidate &c : candidates)
+      if (c.opened)
+        c.removed = c.opened = false;
+    constraints_changed = true;
   }
 
   unsigned int

@@ -256,16 +256,11 @@ namespace RestShape
           continue;
         any_face = true;
         fv.reinit(cell, f);
-        // An opening of the skull: its faces lose the opening pressure
-        // (potential flux of the uniform part: p0 / 3 (x - x_level)).
-        const double removed =
+        // An opening of the skull: its faces lose the opening's pressure.
+        const SurfaceLoad::Face face =
           opening.defined() && opening.contains(cell->face(f)->center()) ?
-            current_load.opening_pressure :
-            0.;
-        const auto flux = [&](const Point<3> &x) {
-          return load.potential_flux(current_load, x) -
-                 removed / 3. * (x - load.level);
-        };
+            SurfaceLoad::Face::opened :
+            SurfaceLoad::Face::covered;
         if (follower)
           {
             fv[u].get_function_values(d_buffer, scratch.face_d);
@@ -282,7 +277,7 @@ namespace RestShape
               {
                 // Dead: -p(X) N dA on the face of the mesh geometry.
                 const Tensor<1, 3> t =
-                  -(load.pressure(current_load, X) - removed) * N;
+                  -load.pressure(current_load, X, face) * N;
                 for (unsigned int i = 0; i < n_dofs; ++i)
                   {
                     const double f_ext =
@@ -296,12 +291,14 @@ namespace RestShape
             // Follower: -p(x) cof(F) N dA on the current face, x = X + d.
             const Tensor2      F = I + scratch.face_grad_d[q];
             const Point<3>     x = X + scratch.face_d[q];
-            const double       p = load.pressure(current_load, x) - removed;
+            const double       p = load.pressure(current_load, x, face);
             const Tensor<1, 3> a = cofactor_times(F, N) * dA;
             // Potential from the rest shape: Q . a now, less at X + w.
             const Tensor2 G = I + scratch.face_grad_w[q];
-            copy.energy += flux(x) * a - flux(X + scratch.face_w[q]) *
-                                           cofactor_times(G, N) * dA;
+            copy.energy +=
+              load.potential_flux(current_load, x, face) * a -
+              load.potential_flux(current_load, X + scratch.face_w[q], face) *
+                cofactor_times(G, N) * dA;
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 const double f_ext = -p * fv.shape_value(i, q) *
@@ -312,7 +309,8 @@ namespace RestShape
             if (!matrix)
               continue;
             // K_ij = -d f_i / d u_j = phi_i (dp_j a + p da_j)[c_i].
-            const Tensor<1, 3> grad_p = load.pressure_gradient(current_load, x);
+            const Tensor<1, 3> grad_p =
+              load.pressure_gradient(current_load, x, face);
             for (unsigned int j = 0; j < n_dofs; ++j)
               {
                 const unsigned int cj = fe_.system_to_component_index(j).first;

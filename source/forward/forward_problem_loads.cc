@@ -53,12 +53,13 @@ namespace RestShape
               "level above some of the pressure faces");
       }
     // (A scenario may set a pressure where the scene has none.)
-    const ScenarioParameters &scenario = parameters.scenario;
-    const bool                pressure_acts =
-      loads.pressure != 0 || (loads.hydrostatic && loads.gravity.norm() > 0) ||
-      (scenario.enabled && scenario.has_pressure && scenario.pressure != 0);
+    bool pressure_acts =
+      loads.pressure != 0 || (loads.hydrostatic && loads.gravity.norm() > 0);
+    for (const ScenarioParameters &scenario : parameters.scenarios)
+      pressure_acts |= scenario.has_pressure && scenario.pressure != 0;
     symmetric_tangent = !(loads.follower && pressure_acts) ||
                         pressure_surface_is_closed_or_held();
+    scene_tangent_symmetric = symmetric_tangent;
   }
 
   Point<3>
@@ -80,7 +81,13 @@ namespace RestShape
   unsigned int
   ForwardProblem::open_surface(const Region &region)
   {
-    opening            = region;
+    opening = region;
+    if (!opening.defined())
+      {
+        symmetric_tangent = scene_tangent_symmetric;
+        linear_solver->set_symmetric(symmetric_tangent);
+        return 0;
+      }
     unsigned int faces = 0;
     for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
       faces += opening.contains(cell->face(f)->center());
@@ -184,6 +191,7 @@ namespace RestShape
     LoadState load;
     load.acceleration = parameters.loads.gravity;
     load.pressure     = parameters.loads.pressure;
+    load.fluid        = surface_load_->scene_fluid(parameters.loads.gravity);
     return load;
   }
 } // namespace RestShape

@@ -260,16 +260,21 @@ namespace RestShape
         const Tensor2                    I = unit_symmetric_tensor<3>();
         for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
           ffv.reinit(cell, f);
+          const SurfaceLoad::Face face =
+            opening.defined() && opening.contains(cell->face(f)->center()) ?
+              SurfaceLoad::Face::opened :
+              SurfaceLoad::Face::covered;
           ffv[u].get_function_values(d_ghost, face_d);
           ffv[u].get_function_gradients(d_ghost, grad_d);
           for (const unsigned int q : ffv.quadrature_point_indices())
             {
               const Point<3>     &X = ffv.quadrature_point(q);
               const Tensor<1, 3> &N = ffv.normal_vector(q);
-              force -= follower ?
-                         surface_load_->pressure(load, X + face_d[q]) *
-                           cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
-                         surface_load_->pressure(load, X) * N * ffv.JxW(q);
+              force -=
+                follower ?
+                  surface_load_->pressure(load, X + face_d[q], face) *
+                    cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
+                  surface_load_->pressure(load, X, face) * N * ffv.JxW(q);
             }
         });
       }

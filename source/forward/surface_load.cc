@@ -14,29 +14,100 @@ namespace RestShape
     , fluid_density(loads.hydrostatic ? loads.fluid_density : 0.)
   {}
 
+  namespace
+  {
+    /// s = a . (x - level) of column @p c at @p x (m^2/s^2; > 0: wetted).
+    double
+    depth(const FluidColumn &c, const Point<3> &x)
+    {
+      return c.acceleration * (x - c.level);
+    }
+
+    /// The uniform pressure a face carries.
+    double
+    uniform(const LoadState &load, const SurfaceLoad::Face face)
+    {
+      return face == SurfaceLoad::Face::covered ?
+               load.pressure :
+               load.pressure - load.opening_pressure;
+    }
+
+    /// @p f(column, weight) for each column a face carries (those of an
+    /// opening with their weight negated on its faces).
+    template <typename Function>
+    void
+    for_each_column(const LoadState        &load,
+                    const SurfaceLoad::Face face,
+                    const Function         &f)
+    {
+      for (const FluidColumn &c : load.fluid)
+        f(c, c.weight);
+      if (face == SurfaceLoad::Face::opened)
+        for (const FluidColumn &c : load.opening_fluid)
+          f(c, -c.weight);
+    }
+  } // namespace
+
+  bool
+  SurfaceLoad::acts(const LoadState &load) const
+  {
+    const auto wets = [](const std::vector<FluidColumn> &columns) {
+      for (const FluidColumn &c : columns)
+        if (c.weight != 0 && c.acceleration.norm_square() > 0)
+          return true;
+      return false;
+    };
+    return load.pressure != 0 || load.opening_pressure != 0 ||
+           (fluid_density > 0 &&
+            (wets(load.fluid) || wets(load.opening_fluid)));
+  }
+
   double
-  SurfaceLoad::pressure(const LoadState &load, const Point<3> &x) const
+  SurfaceLoad::pressure(const LoadState &load,
+                        const Point<3>  &x,
+                        const Face       face) const
   {
-    const double s = load.acceleration * (x - level);
-    return load.pressure + fluid_density * std::max(0., s);
+    double p = uniform(load, face);
+    for_each_column(load, face, [&](const FluidColumn &c, const double w) {
+      p += w * fluid_density * std::max(0., depth(c, x));
+    });
+    return p;
   }
 
   Tensor<1, 3>
-  SurfaceLoad::pressure_gradient(const LoadState &load, const Point<3> &x) const
+  SurfaceLoad::pressure_gradient(const LoadState &load,
+                                 const Point<3>  &x,
+                                 const Face       face) const
   {
-    const double s = load.acceleration * (x - level);
-    return s > 0 ? fluid_density * load.acceleration : Tensor<1, 3>();
+    Tensor<1, 3> g;
+    for_each_column(load, face, [&](const FluidColumn &c, const double w) {
+      if (depth(c, x) > 0)
+        g += w * fluid_density * c.acceleration;
+    });
+    return g;
   }
 
   Tensor<1, 3>
-  SurfaceLoad::potential_flux(const LoadState &load, const Point<3> &x) const
+  SurfaceLoad::potential_flux(const LoadState &load,
+                              const Point<3>  &x,
+                              const Face       face) const
   {
-    Tensor<1, 3> q  = load.pressure / 3. * (x - level);
-    const double a2 = load.acceleration.norm_square();
-    const double s  = load.acceleration * (x - level);
-    if (fluid_density > 0 && a2 > 0 && s > 0)
-      q += fluid_density * s * s / (2 * a2) * load.acceleration;
+    Tensor<1, 3> q = uniform(load, face) / 3. * (x - level);
+    for_each_column(load, face, [&](const FluidColumn &c, const double w) {
+      const double a2 = c.acceleration.norm_square();
+      const double s  = depth(c, x);
+      if (fluid_density > 0 && a2 > 0 && s > 0)
+        q += w * fluid_density * s * s / (2 * a2) * c.acceleration;
+    });
     return q;
+  }
+
+  std::vector<FluidColumn>
+  SurfaceLoad::scene_fluid(const Tensor<1, 3> &a) const
+  {
+    if (fluid_density == 0 || a.norm_square() == 0)
+      return {};
+    return {{a, level, 1.}};
   }
 
   Tensor<1, 3>

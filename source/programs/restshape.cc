@@ -198,14 +198,15 @@ main(int argc, char **argv)
           "",
           "",
           "no scene file given; usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm");
-      read_scene(prm, prm_file, overrides);
+      const std::vector<std::string> scenarios =
+        read_scene(prm, prm_file, overrides);
 
       // Names of labels (the mesh's, Mesh/Label names) become labels.
       MeshParameters mesh_parameters;
       mesh_parameters.parse_parameters(prm);
       Parameters::replace_label_names(prm, scene_label_names(mesh_parameters));
       Parameters parameters;
-      parameters.parse_parameters(prm);
+      parameters.parse_parameters(prm, scenarios);
       // Destroy the simulator (and its TimerOutput, which prints a banner
       // when destroyed during stack unwinding) before reporting an error.
       std::exception_ptr error;

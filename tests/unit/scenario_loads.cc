@@ -1,9 +1,11 @@
 // The loads of a scenario: gravity turned about the mesh's axes (right-
 // handed, x then y then z), the drainage as the buoyancy lost above a
-// level, and the change between two load states that the stress-free model
-// receives (linear in every term, so load stepping reaches it exactly).
+// level or as a hydrostatic pressure cut at the level, and the change
+// between two load states that the stress-free model receives (linear in
+// every term, so load stepping reaches it exactly).
 #include <restshape/app/scenario.h>
 #include <restshape/base/input_error.h>
+#include <restshape/forward/surface_load.h>
 
 #include <cmath>
 
@@ -28,6 +30,11 @@ namespace
     return (a - b).norm() <= 1e-14 * (1 + b.norm());
   }
 
+  /// Buoyancy: the free surface is never asked for.
+  const FreeSurface no_surface = [](const Tensor<1, 3> &) -> Point<3> {
+    throw InputError("", "test", "the free surface asked for");
+  };
+
   LoadState
   turned(const Tensor<1, 3> &degrees, const Tensor<1, 3> &gravity)
   {
@@ -35,7 +42,69 @@ namespace
     p.rotation_degrees = degrees;
     LoadState scene;
     scene.acceleration = gravity;
-    return changed_load(p, scene);
+    return changed_load(p, LoadParameters(), scene, no_surface);
+  }
+
+  /// The hydrostatic pressure: the scene under (0, 0, -g) with its free
+  /// surface at z = 0.1 m, turned, drained and opened.
+  void
+  check_hydrostatic(const double g)
+  {
+    LoadParameters loads;
+    loads.hydrostatic   = true;
+    loads.fluid_density = 1000;
+    const SurfaceLoad surface(loads, Point<3>(0, 0, 0.1));
+    LoadState         scene;
+    scene.acceleration = vec(0, 0, -g);
+    scene.fluid        = surface.scene_fluid(scene.acceleration);
+    const Point<3> x(0, 0.02, 0.05); // 0.05 m below the surface
+    expect(std::abs(surface.pressure(scene, x) - 1000 * g * 0.05) < 1e-9,
+           "the scene's hydrostatic pressure: rho g depth");
+
+    ScenarioParameters prone;
+    prone.rotation_degrees = vec(180, 0, 0);
+    const Point<3> bottom(0, 0, -0.1); // the surface after the turn
+    const auto     turned_surface = [&](const Tensor<1, 3> &a) {
+      expect(a == vec(0, 0, g), "the free surface under the turned gravity");
+      return bottom;
+    };
+    const LoadState flipped = changed_load(prone, loads, scene, turned_surface);
+    expect(flipped.fluid.size() == 1 &&
+             std::abs(surface.pressure(flipped, x) - 1000 * g * 0.15) < 1e-9,
+           "turned prone, the pressure grows towards +z from the new surface");
+    const LoadState change = difference(flipped, scene);
+    expect(change.fluid.size() == 2 &&
+             std::abs(surface.pressure(change, x) - 1000 * g * 0.10) < 1e-9,
+           "the change: the turned column less the scene's");
+    expect(std::abs(surface.pressure(between(scene, flipped, 0.25), x) -
+                    1000 * g * (0.75 * 0.05 + 0.25 * 0.15)) < 1e-9,
+           "load stepping blends the two columns");
+    expect(between(scene, scene, 0.3).fluid.size() == 1, "equal columns merge");
+
+    ScenarioParameters drained;
+    drained.has_fluid_level = true;
+    drained.fluid_level     = Point<3>(0, 0, 0.03);
+    const LoadState low     = changed_load(drained, loads, scene, no_surface);
+    expect(surface.pressure(low, x) == 0 &&
+             std::abs(surface.pressure(low, Point<3>(0, 0, 0.01)) -
+                      1000 * g * 0.02) < 1e-9 &&
+             low.drained_acceleration == Tensor<1, 3>(),
+           "drained: no pressure above the level, rho g depth below it, no "
+           "buoyancy term");
+
+    ScenarioParameters opened;
+    opened.craniotomy          = parse_region("sphere: 0, 0, 0, 1", "test");
+    const LoadState open       = changed_load(opened, loads, scene, no_surface);
+    const auto      in_opening = SurfaceLoad::Face::opened;
+    expect(surface.pressure(open, x, in_opening) == 0 &&
+             surface.pressure_gradient(open, x, in_opening) == Tensor<1, 3>() &&
+             surface.potential_flux(open, x, in_opening).norm() < 1e-15 &&
+             std::abs(surface.pressure(open, x) - 1000 * g * 0.05) < 1e-9,
+           "an opening is at atmospheric pressure, the rest stays wetted");
+    expect(std::abs(surface.pressure(difference(open, scene), x, in_opening) +
+                    1000 * g * 0.05) < 1e-9 &&
+             surface.pressure(difference(open, scene), x) == 0,
+           "the change at an opening: the scene's pressure taken off");
   }
 } // namespace
 
@@ -70,9 +139,10 @@ main()
   p.pressure            = 0;
   p.tissue_acceleration = vec(1, 0, 0);
   LoadState scene;
-  scene.acceleration      = vec(0, 0, -g);
-  scene.pressure          = 100;
-  const LoadState changed = changed_load(p, scene);
+  scene.acceleration = vec(0, 0, -g);
+  scene.pressure     = 100;
+  const LoadState changed =
+    changed_load(p, LoadParameters(), scene, no_surface);
   expect(changed.drained_acceleration == vec(0, 0, -g) &&
            changed.fluid_level == p.fluid_level && changed.pressure == 0 &&
            changed.tissue_acceleration == vec(1, 0, 0),
@@ -98,10 +168,11 @@ main()
 
   // A craniotomy: its faces lose the uniform pressure after the change.
   ScenarioParameters opened;
-  opened.craniotomy    = parse_region("sphere: 0, 0, 10, 5", "test");
-  opened.has_pressure  = true;
-  opened.pressure      = 40;
-  const LoadState open = changed_load(opened, scene);
+  opened.craniotomy   = parse_region("sphere: 0, 0, 10, 5", "test");
+  opened.has_pressure = true;
+  opened.pressure     = 40;
+  const LoadState open =
+    changed_load(opened, LoadParameters(), scene, no_surface);
   expect(open.pressure == 40 && open.opening_pressure == 40,
          "an opening is at atmospheric pressure: it loses the pressure "
          "after the change");
@@ -133,5 +204,6 @@ main()
       }
   expect(refused == 6 && parse_region(" ", "test").defined() == false,
          "bad regions are refused; an empty one is none");
+  check_hydrostatic(g);
   return failures == 0 ? 0 : 1;
 }

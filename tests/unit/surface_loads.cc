@@ -140,9 +140,9 @@ namespace
         const VectorType d = nodal_field(f, [&](const Point<3> &X) {
           return Tensor<1, 3>((lambda - 1) * X);
         });
-        LoadState        load;
-        load.acceleration = Tensor<1, 3>({0, 0, -9.81});
-        load.pressure     = 250;
+        // Gravity (0, 0, -9.81) and the fluid's column (Loads).
+        LoadState load = f.scene_load();
+        load.pressure  = 250;
         f.set_state(d, f.zero_vector(), load);
         const Tensor<1, 3> force = f.surface_force(load);
         const double expected = rho_fluid * 9.81 * volume * std::pow(lambda, 3);
@@ -160,17 +160,16 @@ namespace
   double
   tangent_error(ForwardProblem &f)
   {
-    const Tensor2    Q = rotation(Tensor<1, 3>({0.3, -0.5, 0.2}));
-    const VectorType d = nodal_field(f, [&](const Point<3> &X) {
+    const Tensor2    Q     = rotation(Tensor<1, 3>({0.3, -0.5, 0.2}));
+    const VectorType d     = nodal_field(f, [&](const Point<3> &X) {
       const Tensor<1, 3> sheared({X[0] + 0.2 * X[1], X[1], X[2] - 0.1 * X[0]});
       return Tensor<1, 3>(Q * sheared - X);
     });
-    const VectorType v = nodal_field(f, [](const Point<3> &X) {
+    const VectorType v     = nodal_field(f, [](const Point<3> &X) {
       return Tensor<1, 3>(
         {std::sin(60 * X[1]) * 1e-3, std::cos(40 * X[2]) * 1e-3, X[0] * 0.02});
     });
-    LoadState        load;
-    load.acceleration      = Tensor<1, 3>({0, 0, -9.81});
+    LoadState        load  = f.scene_load(); // gravity (0, 0, -9.81), the fluid
     load.pressure          = 400;
     const auto residual_at = [&](const double s) {
       VectorType x = d;

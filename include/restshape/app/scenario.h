@@ -29,14 +29,26 @@ namespace RestShape
   std::map<Label, TissueShift>
   tissue_shifts(const ForwardProblem &forward, const VectorType &u);
 
+  /// A point of the free surface of the scene's fluid under the body
+  /// acceleration given (m).
+  using FreeSurface =
+    std::function<dealii::Point<3>(const dealii::Tensor<1, 3> &)>;
+
   /// The scene's load @p scene changed as @p p says: gravity rotated (with
-  /// the buoyancy), the fluid drained above a level, the surface pressure
-  /// set, a tissue body force added.
+  /// the buoyancy or the hydrostatic pressure), the fluid drained below a
+  /// level, the surface pressure set, a tissue body force added, an
+  /// opening at atmospheric pressure. @p loads: how the fluid acts;
+  /// @p free_surface: where the hydrostatic fluid's surface lies under the
+  /// turned gravity when no level is given.
   LoadState
-  changed_load(const ScenarioParameters &p, const LoadState &scene);
+  changed_load(const ScenarioParameters &p,
+               const LoadParameters     &loads,
+               const LoadState          &scene,
+               const FreeSurface        &free_surface);
 
   /// InputError (without file name) for a scenario that changes nothing it
-  /// says: a fluid level above the whole body (nothing drained).
+  /// says: a fluid level above the whole body (nothing drained), an
+  /// opening that contains no face of the body.
   void
   check_scenario(const Parameters   &parameters,
                  const LabelledMesh &mesh,
@@ -50,7 +62,9 @@ namespace RestShape
    *  (2) the model stress-free in the geometry X + d_eq (rest shape =
    *      equilibrium, the same contact set C) under the change of load
    *      alone (changed - scene), as the paper's Table 1 does;
-   * and report the shift of each from X + d_eq, tissue by tissue.
+   * and report the shift of each from X + d_eq, tissue by tissue. The
+   * forward problem (and the contact) are left at the equilibrium again,
+   * for the next scenario.
    */
   class Scenario
   {
@@ -60,6 +74,7 @@ namespace RestShape
       std::function<void(const SolveStatistics &, const std::string &model)>;
 
     Scenario(const Parameters                 &parameters,
+             const ScenarioParameters         &scenario,
              ForwardProblem                   &forward,
              ContactProblem                   *contact,
              OutputWriter                     &output,
@@ -76,11 +91,15 @@ namespace RestShape
     report(const VectorType &prestressed,
            const VectorType &stress_free,
            const VectorType &contact_fields);
+    /// The summary key "scenario_WHAT" (or "scenario_NAME_WHAT").
+    std::string
+    key(const std::string &what) const;
     /// One line that says what the scenario changes.
     std::string
     description(const LoadState &scene, const LoadState &changed) const;
 
     const Parameters                 &parameters;
+    const ScenarioParameters         &scenario;
     ForwardProblem                   &forward;
     ContactProblem                   *contact;
     OutputWriter                     &output;

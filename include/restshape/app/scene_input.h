@@ -20,9 +20,12 @@ namespace RestShape
 
   /**
    * Read @p prm_file into @p prm (declared), then apply @p overrides.
-   * Throws InputError naming the file (and line, for unknown names).
+   * Subsections "Scenario NAME" of the file, its includes and the
+   * overrides are declared first; returns their NAMEs in the order
+   * written (for Parameters::parse_parameters()). Throws InputError naming
+   * the file (and line, for unknown names).
    */
-  void
+  std::vector<std::string>
   read_scene(dealii::ParameterHandler       &prm,
              const std::string              &prm_file,
              const std::vector<std::string> &overrides);

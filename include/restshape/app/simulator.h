@@ -111,7 +111,7 @@ namespace RestShape
     stability_not_checked_because() const;
     /// Scenario/Enabled: both models under what the scenario changes.
     void
-    run_scenario();
+    run_scenario(const ScenarioParameters &scenario);
     void
     postprocess(const unsigned int cycle, const SolveStatistics &stats);
     void

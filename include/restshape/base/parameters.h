@@ -283,9 +283,11 @@ namespace RestShape
    * Scenario: what surgery changes after the rest shape (the head turned,
    * the CSF drained, a force field), applied to the pre-stressed model and
    * to the model stress-free in the same geometry (source/app/scenario.cc).
+   * Subsection "Scenario", and one "Scenario NAME" per further scenario.
    */
   struct ScenarioParameters
   {
+    std::string          name; // empty: subsection "Scenario"
     bool                 enabled = false;
     dealii::Tensor<1, 3> rotation_degrees; // about x, then y, then z
     bool                 has_fluid_level = false;
@@ -295,15 +297,27 @@ namespace RestShape
     dealii::Tensor<1, 3> tissue_acceleration; // m/s^2
     Region               craniotomy;          // m (given in the mesh unit)
 
+    /// The subsection "Scenario" (@p name empty) or "Scenario NAME".
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &name = "");
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &name);
+    /// "Scenario" or "Scenario NAME": what error messages name.
+    std::string
+    section() const;
+    /// "scenario" or "scenario_NAME": its files and summary keys.
+    std::string
+    output_name() const;
     /// Read the craniotomy's surface file (Craniotomy = 'surface: FILE',
     /// after Region::scale()): its inside test. Throws InputError naming
     /// the file and Scenario/Craniotomy.
     void
     read_surfaces();
+    /// InputError for what an enabled scenario cannot do with these
+    /// @p loads, or without the inverse problem (@p inverse_enabled).
+    void
+    check(const LoadParameters &loads, const bool inverse_enabled) const;
   };
 
   /// All subsections together: what a scene file describes.
@@ -320,7 +334,8 @@ namespace RestShape
     RefinementParameters     refinement;
     ContactParameters        contact;
     InverseParameters        inverse;
-    ScenarioParameters       scenario;
+    /// The enabled scenarios: "Scenario", then the named ones as written.
+    std::vector<ScenarioParameters> scenarios;
     /// Every parameter that names labels, as written (checked against the
     /// mesh's labels by the Simulator).
     std::vector<LabelList> label_lists;
@@ -328,8 +343,10 @@ namespace RestShape
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /// Throws InputError (without file name; the caller adds it).
+    /// @p scenario_names: the named scenarios declared (read_scene()).
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler       &prm,
+                     const std::vector<std::string> &scenario_names = {});
 
     /**
      * Replace the label names in every label list of @p prm by their

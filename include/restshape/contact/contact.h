@@ -114,12 +114,15 @@ namespace RestShape
 
     /**
      * An opening of the obstacle (a craniotomy): the candidates inside
-     * @p opening (mesh geometry) lose their contact for the rest of the run:
-     * never eligible or active, never counted beyond the obstacle (tissue
-     * may bulge through the opening). Returns how many (all ranks).
+     * @p opening (mesh geometry) lose their contact until close_openings():
+     * never eligible or active, never counted beyond the obstacle (tissue may
+     * bulge through the opening). Returns how many (all ranks).
      */
     unsigned int
     remove_contact(const Region &opening);
+    /// Undo remove_contact(): contact allowed again where it was opened.
+    void
+    close_openings();
     /**
      * Until restore_contact(), only the candidates that touch the obstacle
      * at the target (the mesh geometry moved by @p target_shift, owned, m:
@@ -341,6 +344,7 @@ namespace RestShape
       /// distance along their mean normal for the rest of the solve.
       bool follow_surface = false;
       bool removed        = false; // in an opening (remove_contact())
+      bool opened         = false; // removed by remove_contact()
       bool set_aside      = false; // by keep_target_contacts()
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its

@@ -164,8 +164,9 @@ namespace RestShape
     dealii::Point<3>
     highest_pressure_point(const dealii::Tensor<1, 3> &acceleration) const;
     /// A craniotomy: pressure faces centred in @p opening (mesh geometry)
-    /// carry p(x) - opening_pressure; the tangent turns non-symmetric (a
-    /// follower load stopping at the rim). Returns their number.
+    /// lose the opening's pressure; the tangent turns non-symmetric (a
+    /// follower load stopping at the rim). Returns their number. An empty
+    /// region closes the opening again.
     unsigned int
     open_surface(const Region &opening);
 
@@ -663,17 +664,16 @@ namespace RestShape
       newton_update;
     VectorType d, d_ghost, w, w_ghost;
     // The assembly reads d and w from, and adds into, deal.II's distributed
-    // vectors (locally relevant entries, element access by an index shift)
-    // and copies the sums into the Trilinos vectors above.
+    // vectors (locally relevant entries, element access by an index
+    // shift), then copies the sums into the Trilinos vectors above.
     using BufferType = dealii::LinearAlgebra::distributed::Vector<double>;
     BufferType d_buffer, w_buffer;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
       magnitude_buffer;
     double total_energy = 0; // of the last assembly (J)
-    // The last assembly that met an inverted cell (det F <= 0 or det G <=
-    // 0 at a quadrature point): how many, and one of them (label, centre
-    // in the mesh, m), summed and chosen over all ranks. Assemblies without
-    // inverted cells leave it as it is.
+    // The last assembly that met an inverted cell (det F or det G <= 0 at
+    // a quadrature point): how many, one of them (label, centre in the
+    // mesh, m), over all ranks. Others leave it as it is.
     struct InvertedCells
     {
       unsigned int               count = 0;
@@ -689,7 +689,7 @@ namespace RestShape
 
     ContactConditions            last_conditions;
     std::unique_ptr<SurfaceLoad> surface_load_;
-    bool                         symmetric_tangent = true;
+    bool symmetric_tangent = true, scene_tangent_symmetric = true;
 
     std::unique_ptr<LinearSolver> linear_solver;
     ActiveSetConstraints         *contact = nullptr;

@@ -5,8 +5,22 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <vector>
+
 namespace RestShape
 {
+  /**
+   * A fluid's hydrostatic pressure field, weight rho_f max(0, a . (x -
+   * level)) in Pa at x: a (m/s^2) the acceleration it is under, level (m)
+   * a point of its free surface, rho_f the fluid's density.
+   */
+  struct FluidColumn
+  {
+    dealii::Tensor<1, 3> acceleration;
+    dealii::Point<3>     level;
+    double               weight = 1;
+  };
+
   /**
    * The loads of a solve at one load step, all acting on the mass of the
    * mesh (target) geometry:
@@ -24,22 +38,55 @@ namespace RestShape
    *   drained_acceleration, in the mesh geometry). Drained to a level under
    *   gravity g: drained_acceleration = g.
    *
-   * - opening_pressure (Pa): the uniform pressure taken off the pressure
-   *   faces of an opening of the skull (ForwardProblem::open_surface()):
-   *   they carry p(x) - opening_pressure.
+   * - fluid (Loads/Fluid load = hydrostatic pressure): the fluid's
+   *   pressure on the pressure faces, a sum of FluidColumn fields;
+   * - opening_pressure (Pa) and opening_fluid: the uniform and the fluid
+   *   pressure taken off the pressure faces of an opening of the skull
+   *   (ForwardProblem::open_surface()).
    *
-   * Every term is linear in its vector, so the difference of two load
-   * states (what a scenario changes) is a load state too.
+   * Every term is linear in its vector or weight, so the difference of two
+   * load states (what a scenario changes) is a load state too.
    */
   struct LoadState
   {
-    dealii::Tensor<1, 3> acceleration;
-    double               pressure = 0;
-    dealii::Tensor<1, 3> tissue_acceleration;
-    dealii::Tensor<1, 3> drained_acceleration;
-    dealii::Point<3>     fluid_level;
-    double               opening_pressure = 0;
+    dealii::Tensor<1, 3>     acceleration;
+    double                   pressure = 0;
+    dealii::Tensor<1, 3>     tissue_acceleration;
+    dealii::Tensor<1, 3>     drained_acceleration;
+    dealii::Point<3>         fluid_level;
+    std::vector<FluidColumn> fluid;
+    double                   opening_pressure = 0;
+    std::vector<FluidColumn> opening_fluid;
   };
+
+  /// @p a weighted by @p wa plus @p b weighted by @p wb, columns of the
+  /// same acceleration and level merged, those of weight 0 dropped.
+  inline std::vector<FluidColumn>
+  combine(const std::vector<FluidColumn> &a,
+          const double                    wa,
+          const std::vector<FluidColumn> &b,
+          const double                    wb)
+  {
+    std::vector<FluidColumn> sum;
+    const auto               add = [&sum](const FluidColumn &c, double w) {
+      for (FluidColumn &s : sum)
+        if (s.acceleration == c.acceleration && s.level == c.level)
+          {
+            s.weight += w * c.weight;
+            return;
+          }
+      sum.push_back({c.acceleration, c.level, w * c.weight});
+    };
+    for (const FluidColumn &c : a)
+      add(c, wa);
+    for (const FluidColumn &c : b)
+      add(c, wb);
+    std::vector<FluidColumn> kept;
+    for (const FluidColumn &c : sum)
+      if (c.weight != 0)
+        kept.push_back(c);
+    return kept;
+  }
 
   /// The load at fraction @p s of the way from @p start to @p end
   /// (load stepping: s = 0 gives start, s = 1 end). The fluid level is the
@@ -59,6 +106,9 @@ namespace RestShape
       s * (end.drained_acceleration - start.drained_acceleration);
     load.opening_pressure = start.opening_pressure +
                             s * (end.opening_pressure - start.opening_pressure);
+    load.fluid = combine(start.fluid, 1 - s, end.fluid, s);
+    load.opening_fluid =
+      combine(start.opening_fluid, 1 - s, end.opening_fluid, s);
     load.fluid_level = end.drained_acceleration.norm_square() > 0 ?
                          end.fluid_level :
                          start.fluid_level;
@@ -76,6 +126,8 @@ namespace RestShape
     d.tissue_acceleration  = a.tissue_acceleration - b.tissue_acceleration;
     d.drained_acceleration = a.drained_acceleration - b.drained_acceleration;
     d.opening_pressure     = a.opening_pressure - b.opening_pressure;
+    d.fluid                = combine(a.fluid, 1, b.fluid, -1);
+    d.opening_fluid        = combine(a.opening_fluid, 1, b.opening_fluid, -1);
     d.fluid_level =
       a.drained_acceleration.norm_square() > 0 ? a.fluid_level : b.fluid_level;
     return d;

@@ -14,12 +14,14 @@ namespace RestShape
   /**
    * The pressure on the pressure faces (Loads subsection):
    *
-   *     p(x) = p0 + rho_f max(0, a . (x - x_level))
+   *     p(x) = p0 + sum_k w_k rho_f max(0, a_k . (x - x_k))
    *
-   * with p0 the Surface pressure, a the body acceleration (m/s^2, pointing
-   * down: the depth below the level is a . (x - x_level) / |a|), rho_f the
-   * fluid density when Fluid load = hydrostatic pressure (else 0), x_level a
-   * point of the free surface. Faces above the level are drained.
+   * with p0 the uniform pressure (LoadState::pressure) and one term per
+   * FluidColumn (LoadState::fluid: weight w_k, acceleration a_k pointing
+   * down, x_k a point of its free surface), rho_f the fluid density when
+   * Fluid load = hydrostatic pressure (else 0). Faces above a column's level
+   * are drained of it. The faces of an opening of the skull carry p(x) less
+   * the opening's part (LoadState::opening_pressure and opening_fluid).
    *
    * A follower pressure acts on the current surface: the force on a face
    * element is -p(x) cof(F) N dA (Nanson), F = I + grad d the deformation
@@ -27,13 +29,22 @@ namespace RestShape
    * is conservative where the loaded surface is closed or held at its
    * edges, with potential  Pi = int Q(x) . cof(F) N dA,  div Q = p:
    *
-   *     Q(x) = p0 / 3 (x - x_level) + rho_f s+^2 / (2 |a|^2) a,
-   *     s = a . (x - x_level),  s+ = max(0, s).
+   *     Q(x) = p0 / 3 (x - x_ref) + sum_k w_k rho_f s+^2 / (2 |a_k|^2) a_k,
+   *     s = a_k . (x - x_k),  s+ = max(0, s).
    */
   class SurfaceLoad
   {
   public:
-    /// @p level: a point of the free surface (m).
+    /// Which pressure a face carries: all of it, or what is left in an
+    /// opening of the skull.
+    enum class Face
+    {
+      covered,
+      opened
+    };
+
+    /// @p level: the scene fluid's free surface (m), also the reference
+    /// point x_ref of the uniform pressure's potential.
     SurfaceLoad(const LoadParameters &loads, const dealii::Point<3> &level);
 
     /// Whether the pressure follows the current surface.
@@ -44,21 +55,28 @@ namespace RestShape
     }
     /// Whether any pressure acts under @p load.
     bool
-    acts(const LoadState &load) const
-    {
-      return load.pressure != 0 || load.opening_pressure != 0 ||
-             (fluid_density > 0 && load.acceleration.norm_square() > 0);
-    }
+    acts(const LoadState &load) const;
 
     /// p(x) in Pa at the position @p x (m).
     double
-    pressure(const LoadState &load, const dealii::Point<3> &x) const;
+    pressure(const LoadState        &load,
+             const dealii::Point<3> &x,
+             const Face              face = Face::covered) const;
     /// dp/dx in Pa/m.
     dealii::Tensor<1, 3>
-    pressure_gradient(const LoadState &load, const dealii::Point<3> &x) const;
+    pressure_gradient(const LoadState        &load,
+                      const dealii::Point<3> &x,
+                      const Face              face = Face::covered) const;
     /// Q(x) (Pa m) with div Q = p: the potential's flux density.
     dealii::Tensor<1, 3>
-    potential_flux(const LoadState &load, const dealii::Point<3> &x) const;
+    potential_flux(const LoadState        &load,
+                   const dealii::Point<3> &x,
+                   const Face              face = Face::covered) const;
+
+    /// The scene's fluid under the acceleration @p a: one column through
+    /// the level (none without a hydrostatic fluid).
+    std::vector<FluidColumn>
+    scene_fluid(const dealii::Tensor<1, 3> &a) const;
 
     const dealii::Point<3> level;
 
