@@ -13,7 +13,11 @@
 #   build/restshape prm/brain_shift_craniotomy.prm
 #   xvfb-run -a python3 doc/make_figures.py scenarios
 #
-# (and doc/figures/brain_craniotomy.png from the last)
+# (and doc/figures/brain_craniotomy.png from the last). With the argument
+# `csf`, only doc/figures/brain_csf.png, from prm/brain_shift_csf.prm:
+#
+#   build/restshape prm/brain_shift_csf.prm
+#   xvfb-run -a python3 doc/make_figures.py csf
 #
 # Writes doc/figures/brain_shapes.png (target, rest and equilibrium surfaces,
 # lateral view from the left), doc/figures/brain_error.png (the error
@@ -273,7 +277,29 @@ def craniotomy(directory):
     print('wrote doc/figures/brain_craniotomy.png')
 
 
+def csf(directory):
+    """The neo-Hookean brain in a hydrostatic CSF turned prone: the shift of
+    both models, and the drained scenario's pre-stressed shift."""
+    prone = read_vtu(os.path.join(directory, 'scenario_prone.vtu'))
+    drained = read_vtu(os.path.join(directory, 'scenario_drained.vtu'))
+    a = magnitude(prone, 'prestressed_shift_mm')
+    b = magnitude(prone, 'stress_free_shift_mm')
+    c = magnitude(drained, 'prestressed_shift_mm')
+    top = max(a.max(), b.max())
+    render_panels([('prone, pre-stressed: shift, max %.2f mm' % a.max(),
+                    surface_at(prone, None, 'a', a), 'a', top),
+                   ('prone, stress-free: shift, max %.2f mm' % b.max(),
+                    surface_at(prone, None, 'b', b), 'b', top),
+                   ('drained above y = 20 mm, pre-stressed: max %.2f mm' % c.max(),
+                    surface_at(drained, None, 'c', c), 'c', c.max())],
+                  'doc/figures/brain_csf.png')
+    print('wrote doc/figures/brain_csf.png')
+
+
 os.makedirs('doc/figures', exist_ok=True)
+if sys.argv[1:] == ['csf']:
+    csf('output/brain_shift_csf')
+    raise SystemExit(0)
 if sys.argv[1:] == ['scenarios']:
     scenarios('output/brain_shift_prone', 'output/brain_shift_drained')
     craniotomy('output/brain_shift_craniotomy')
