@@ -4,6 +4,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/forward/newton_progress.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,48 +23,6 @@ namespace RestShape
       char buffer[256];
       std::snprintf(buffer, sizeof(buffer), fmt, a, b, c);
       return buffer;
-    }
-
-    /**
-     * Whether the last accepted step of Newton (the residuals @p history
-     * of the accepted steps since the constraints last changed; the last
-     * one led to @p now) stalled: it kept more than half of the residual.
-     * Only then is the round-off level worth measuring.
-     */
-    bool
-    stalled(const std::vector<double> &history, const double now)
-    {
-      return history.size() >= 2 &&
-             std::abs(history.back() - now) <= 1e-6 * now &&
-             history.back() > 0.5 * history[history.size() - 2];
-    }
-    /// Accepted steps (since the constraints last changed) whose mean rate
-    /// tells whether Newton can still reach the tolerance.
-    constexpr unsigned int stagnation_window = 10;
-    /// Newton gives up a load step when, at that rate, the steps it has
-    /// left would end above this many times the tolerance...
-    constexpr double stagnation_margin = 1e4;
-    /// ... its relative residual is below this: near an equilibrium,
-    /// where a Newton that converges does so fast (far from it, a slow
-    /// stretch may end in Newton's quadratic basin)...
-    constexpr double near_equilibrium = 1e-2;
-    /// ... and it fell by less than 10 % per step on average (a Newton that
-    /// is entering its quadratic basin speeds up).
-    constexpr double stagnation_rate = 0.9;
-
-    /// The mean factor per step by which the residual fell over the last
-    /// stagnation_window accepted steps of @p history (at most 1); 0 while
-    /// the history is shorter.
-    double
-    mean_rate(const std::vector<double> &history)
-    {
-      if (history.size() <= stagnation_window)
-        return 0;
-      const double now    = history.back();
-      const double before = history[history.size() - 1 - stagnation_window];
-      if (!(now > 0 && before > 0))
-        return 0;
-      return std::min(1., std::pow(now / before, 1. / stagnation_window));
     }
   } // namespace
 
@@ -507,23 +466,14 @@ namespace RestShape
           break;
         // A Newton that cannot reach the tolerance in the steps it has left
         // gives the load step back now (to be halved), not after them all.
-        const double rate = mean_rate(stats.residual_history);
-        const double projected =
-          residual / reference * std::pow(rate, double(max_steps + 1 - it));
-        if (residual < near_equilibrium * reference && rate > stagnation_rate &&
-            projected > stagnation_margin * tol)
+        const std::string stagnates = stagnation(stats.residual_history,
+                                                 residual / reference,
+                                                 max_steps + 1 - it,
+                                                 tol,
+                                                 max_steps);
+        if (!stagnates.empty())
           {
-            stats.failure =
-              format("Newton stagnates at |R|/|f| = %.3e: at the mean rate "
-                     "of its last %.0f steps, the %.0f iterations left ",
-                     residual / reference,
-                     stagnation_window,
-                     max_steps + 1 - it) +
-              format("would end at %.1e, above the tolerance %.1e "
-                     "(Solver/Maximum Newton iterations = %.0f)",
-                     projected,
-                     tol,
-                     max_steps);
+            stats.failure = stagnates;
             return false;
           }
 
