@@ -196,6 +196,17 @@ namespace RestShape
       c.eligible = false;
       c.active   = false;
     }
+
+    /// The candidates of @p candidates taken out for the reason @p why
+    /// (a flag of theirs) may take contact again.
+    template <typename Candidates, typename Flag>
+    void
+    put_back(Candidates &candidates, const Flag why)
+    {
+      for (auto &c : candidates)
+        if (c.*why)
+          c.removed = c.*why = false;
+    }
   } // namespace
 
   unsigned int
@@ -216,9 +227,7 @@ namespace RestShape
   void
   ContactProblem::close_openings()
   {
-    for (Candidate &c : candidates)
-      if (c.opened)
-        c.removed = c.opened = false;
+    put_back(candidates, &Candidate::opened);
     constraints_changed = true;
   }
 
@@ -246,9 +255,7 @@ namespace RestShape
   void
   ContactProblem::restore_contact()
   {
-    for (Candidate &c : candidates)
-      if (c.set_aside)
-        c.removed = c.set_aside = false;
+    put_back(candidates, &Candidate::set_aside);
     constraints_changed = true;
   }
 
