@@ -85,7 +85,7 @@ namespace RestShape
   Simulator::run_phases()
   {
     make_mesh();
-    check_scene();
+    check_scene_on_mesh();
     forward = std::make_unique<ForwardProblem>(
       parameters, *mesh, *materials, timer, pcout);
     if (parameters.contact.enabled())
@@ -95,7 +95,7 @@ namespace RestShape
         forward->set_contact(contact.get());
       }
     setup_problems();
-    check_scene();
+    check_scene_on_problem();
     report_load_scales();
     VectorType rest = initial_rest_shape();
     prepare_output();

@@ -15,7 +15,7 @@ namespace RestShape
   using namespace dealii;
 
   void
-  Simulator::check_scene() const
+  Simulator::check_scene_on_mesh() const
   {
     for (const LabelList &list : parameters.label_lists)
       try
@@ -43,8 +43,7 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
-    // (The mesh's part: once, before the forward problem exists.)
-    if (!parameters.scenarios.empty() && !forward)
+    if (!parameters.scenarios.empty())
       try
         {
           check_scenario(parameters, *mesh, comm);
@@ -53,7 +52,12 @@ namespace RestShape
         {
           throw e.in_file(prm_file);
         }
-    if (forward && parameters.solver.check_stability == StabilityCheck::on &&
+  }
+
+  void
+  Simulator::check_scene_on_problem() const
+  {
+    if (parameters.solver.check_stability == StabilityCheck::on &&
         !forward->tangent_is_symmetric())
       throw InputError(
         prm_file,
@@ -62,7 +66,7 @@ namespace RestShape
         "not conservative (its tangent is not symmetric): stability is "
         "then not a question of the energy; expected Check stability = "
         "false, or pressure faces that are closed or held at their edges");
-    if (!forward || contact || parameters.boundary.support_stiffness > 0)
+    if (contact || parameters.boundary.support_stiffness > 0)
       return;
     // A piece that neither a fixed label nor a joint to a held piece holds
     // floats: its rigid motion makes the problem singular.

@@ -15,6 +15,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/parameters.h>
+#include <restshape/forward/registered_parameters.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -262,6 +263,7 @@ namespace RestShape
     // Check the scene and every value before the first run.
     ParameterHandler prm;
     Parameters::declare_parameters(prm);
+    declare_registered_parameters(prm);
     read_scene(prm, prm_file, overrides);
     prm.enter_subsection("Output");
     const std::string directory = prm.get("Directory") + "/study";

@@ -11,20 +11,11 @@ namespace RestShape
 {
   namespace
   {
-    /// A parameter that names labels.
-    struct LabelListEntry
-    {
-      std::string section, entry;
-      /// A list of label:value (a lone value is a value for all labels).
-      bool values;
-    };
-
     const std::vector<LabelListEntry> label_list_entries = {
       {"Materials", "Young's modulus", true},
       {"Materials", "Poisson's ratio", true},
       {"Materials", "Density", true},
       {"Materials", "Material law", true},
-      {"Materials", "Ogden alpha", true},
       {"Boundary conditions", "Fixed labels", false},
       {"Boundary conditions", "Elastic support labels", false},
       {"Loads", "Pressure labels", false},
@@ -211,18 +202,6 @@ namespace RestShape
       "(ln J)^2, with alpha from Ogden alpha (the brain's law: Budday et al. "
       "2017). All take mu and lambda from Young's modulus and Poisson's "
       "ratio (mu = E / (2 (1 + nu))), and agree at small strain.");
-    prm.declare_entry("Ogden alpha",
-                      "-19",
-                      Patterns::Anything(),
-                      "The exponent alpha of the Ogden law (dimensionless, "
-                      "nonzero, |alpha| <= 100): one value or 'label:value' "
-                      "list (ranges and '*' as for Young's modulus). "
-                      "Negative values stiffen the tissue in compression "
-                      "more than in tension, as brain tissue does (alpha = "
-                      "-19 with mu = 670 Pa fits in vivo positional brain "
-                      "shift, Bennion et al. 2022); alpha = 2 is the "
-                      "neo-Hookean law. Used by labels whose Material law "
-                      "is Ogden.");
     prm.leave_subsection();
   }
 
@@ -236,8 +215,6 @@ namespace RestShape
                                         "Materials/Poisson's ratio");
     density = LabelValues::parse(prm.get("Density"), "Materials/Density");
     law     = prm.get("Material law");
-    ogden_alpha =
-      LabelValues::parse(prm.get("Ogden alpha"), "Materials/Ogden alpha");
     prm.leave_subsection();
 
     const auto where = [](const LabelValues &values, const Label l) {
@@ -272,15 +249,6 @@ namespace RestShape
                          "rho = " + number_text(rho) + " kg/m^3" +
                            where(density, label) + "; expected 0 <= rho <= " +
                            number_text(max_density) + " kg/m^3");
-    constexpr double max_ogden_alpha = 100; // stretch^alpha overflows beyond
-    for (const auto &[label, alpha] : ogden_alpha.listed())
-      if (!(alpha != 0 && std::abs(alpha) <= max_ogden_alpha))
-        throw InputError("",
-                         "Materials/Ogden alpha",
-                         "alpha = " + number_text(alpha) +
-                           where(ogden_alpha, label) +
-                           "; expected a nonzero exponent with |alpha| <= " +
-                           number_text(max_ogden_alpha));
   }
 
   void
@@ -520,8 +488,10 @@ namespace RestShape
   }
 
   void
-  Parameters::parse_parameters(ParameterHandler               &prm,
-                               const std::vector<std::string> &scenario_names)
+  Parameters::parse_parameters(
+    ParameterHandler                  &prm,
+    const std::vector<std::string>    &scenario_names,
+    const std::vector<LabelListEntry> &more_label_lists)
   {
     mesh.parse_parameters(prm);
     discretization.parse_parameters(prm);
@@ -550,7 +520,11 @@ namespace RestShape
         scenario.check(loads, inverse.enabled);
         scenarios.push_back(scenario);
       }
-    for (const LabelListEntry &e : label_list_entries)
+    std::vector<LabelListEntry> entries = label_list_entries;
+    entries.insert(entries.end(),
+                   more_label_lists.begin(),
+                   more_label_lists.end());
+    for (const LabelListEntry &e : entries)
       {
         prm.enter_subsection(e.section);
         label_lists.push_back(
@@ -565,10 +539,16 @@ namespace RestShape
   }
 
   void
-  Parameters::replace_label_names(ParameterHandler &prm,
-                                  const LabelNames &names)
+  Parameters::replace_label_names(
+    ParameterHandler                  &prm,
+    const LabelNames                  &names,
+    const std::vector<LabelListEntry> &more_label_lists)
   {
-    for (const LabelListEntry &e : label_list_entries)
+    std::vector<LabelListEntry> entries = label_list_entries;
+    entries.insert(entries.end(),
+                   more_label_lists.begin(),
+                   more_label_lists.end());
+    for (const LabelListEntry &e : entries)
       {
         prm.enter_subsection(e.section);
         prm.set(e.entry,

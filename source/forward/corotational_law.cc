@@ -78,7 +78,7 @@ namespace RestShape
   {}
 
   CorotationalLaw::CorotationalLaw(const double E, const double nu)
-    : MaterialLaw(LawParameters{E, nu})
+    : MaterialLaw(LawParameters{E, nu, {}})
   {}
 
   bool

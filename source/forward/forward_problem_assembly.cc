@@ -1,5 +1,5 @@
-// ForwardProblem: assembly of the co-rotational residual and tangent
-// (WorkStream over the locally owned cells).
+// ForwardProblem: assembly of the residual and tangent of the material
+// law and the load terms (WorkStream over the locally owned cells).
 
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
@@ -25,19 +25,9 @@ namespace RestShape
                   quadrature,
                   update_values | update_gradients | update_JxW_values |
                     update_quadrature_points)
-      , fe_face_values(mapping,
-                       fe,
-                       face_quadrature,
-                       update_values | update_gradients |
-                         update_quadrature_points | update_normal_vectors |
-                         update_JxW_values)
       , grad_d(quadrature.size())
       , grad_w(quadrature.size())
-      , face_d(face_quadrature.size())
-      , face_w(face_quadrature.size())
-      , face_grad_d(face_quadrature.size())
-      , face_grad_w(face_quadrature.size())
-      , face_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+      , faces(mapping, fe, face_quadrature)
       , b(fe.n_dofs_per_cell())
       , v(fe.n_dofs_per_cell())
     {}
@@ -46,17 +36,14 @@ namespace RestShape
       : ScratchData(other.fe_values.get_mapping(),
                     other.fe_values.get_fe(),
                     other.fe_values.get_quadrature(),
-                    other.fe_face_values.get_quadrature())
+                    other.faces.fe_face_values.get_quadrature())
     {}
 
     FEValues<3>               fe_values;
-    FEFaceValues<3>           fe_face_values;
     std::vector<Tensor2>      grad_d, grad_w;
-    std::vector<Tensor<1, 3>> face_d, face_w;
-    std::vector<Tensor2>      face_grad_d, face_grad_w;
-    FullMatrix<double>        face_matrix; // follower pressure, one cell
-    std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
-    std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
+    FaceScratch               faces; // of the load terms
+    std::vector<Tensor<1, 3>> b;     // gradient w.r.t. the rest configuration
+    std::vector<Tensor2>      v;     // A : (e_c (x) b_j), per shape function j
   };
 
   struct ForwardProblem::CopyData
@@ -182,157 +169,37 @@ namespace RestShape
         for (unsigned int j = i + 1; j < n_dofs; ++j)
           copy.cell_matrix(i, j) = copy.cell_matrix(j, i);
 
-    // Dead loads (gravity, a dead pressure): their potential is
-    // -f_ext . (d - w), the work done from the rest shape. A follower
-    // pressure adds its own potential.
-    if (!surface_load_->follower())
-      assemble_pressure(cell, scratch, copy, matrix);
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      copy.energy -= copy.cell_external(i) *
-                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
-    if (surface_load_->follower())
-      assemble_pressure(cell, scratch, copy, matrix);
-
-    // Elastic support: traction -k (d - w) per unit area of the rest
-    // shape's faces (the tethers belong to the tissue; the same whichever
-    // geometry is the mesh), energy k/2 |d - w|^2.
-    const double k = parameters.boundary.support_stiffness;
-    if (k > 0 && support_labels.count(label))
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            FEFaceValues<3> &fv = scratch.fe_face_values;
-            fv.reinit(cell, f);
-            fv[u].get_function_values(d_buffer, scratch.face_d);
-            fv[u].get_function_values(w_buffer, scratch.face_w);
-            fv[u].get_function_gradients(w_buffer, scratch.face_grad_w);
-            for (const unsigned int q : fv.quadrature_point_indices())
-              {
-                const Tensor<1, 3> u_rest =
-                  scratch.face_d[q] - scratch.face_w[q];
-                const double JxW =
-                  rest_area(scratch.face_grad_w[q], fv.normal_vector(q)) *
-                  fv.JxW(q);
-                copy.energy += 0.5 * k * u_rest.norm_square() * JxW;
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const unsigned int ci =
-                      fe_.system_to_component_index(i).first;
-                    const double phi = fv.shape_value(i, q);
-                    copy.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
-                    if (matrix)
-                      for (unsigned int j = 0; j < n_dofs; ++j)
-                        if (fe_.system_to_component_index(j).first == ci)
-                          copy.cell_matrix(i, j) +=
-                            k * phi * fv.shape_value(j, q) * JxW;
-                  }
-              }
-          }
+    assemble_load_terms(cell, scratch, copy, matrix);
   }
 
   void
-  ForwardProblem::assemble_pressure(
-    const typename DoFHandler<3>::active_cell_iterator &cell,
-    ScratchData                                        &scratch,
-    CopyData                                           &copy,
-    const bool                                          matrix) const
+  ForwardProblem::assemble_load_terms(const CellIterator &cell,
+                                      ScratchData        &scratch,
+                                      CopyData           &copy,
+                                      const bool          matrix) const
   {
-    if (!surface_load_->acts(current_load) ||
-        !pressure_labels.count(cell->material_id()))
-      return;
-    const SurfaceLoad               &load     = *surface_load_;
-    const bool                       follower = load.follower();
-    const unsigned int               n_dofs   = fe_.n_dofs_per_cell();
-    const FEValuesExtractors::Vector u(0);
-    const Tensor2                    I        = unit_symmetric_tensor<3>();
-    FEFaceValues<3>                 &fv       = scratch.fe_face_values;
-    FullMatrix<double>              &K        = scratch.face_matrix;
-    bool                             any_face = false;
-    if (matrix && follower)
-      K = 0;
-    for (const unsigned int f : cell->face_indices())
-      {
-        if (!cell->face(f)->at_boundary())
-          continue;
-        any_face = true;
-        fv.reinit(cell, f);
-        // An opening of the skull: its faces lose the opening's pressure.
-        const SurfaceLoad::Face face =
-          opening.defined() && opening.contains(cell->face(f)->center()) ?
-            SurfaceLoad::Face::opened :
-            SurfaceLoad::Face::covered;
-        if (follower)
-          {
-            fv[u].get_function_values(d_buffer, scratch.face_d);
-            fv[u].get_function_values(w_buffer, scratch.face_w);
-            fv[u].get_function_gradients(d_buffer, scratch.face_grad_d);
-            fv[u].get_function_gradients(w_buffer, scratch.face_grad_w);
-          }
-        for (const unsigned int q : fv.quadrature_point_indices())
-          {
-            const Point<3>     &X  = fv.quadrature_point(q);
-            const Tensor<1, 3> &N  = fv.normal_vector(q);
-            const double        dA = fv.JxW(q);
-            if (!follower)
-              {
-                // Dead: -p(X) N dA on the face of the mesh geometry.
-                const Tensor<1, 3> t =
-                  -load.pressure(current_load, X, face) * N;
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const double f_ext =
-                      fv.shape_value(i, q) *
-                      t[fe_.system_to_component_index(i).first] * dA;
-                    copy.cell_external(i) += f_ext;
-                    copy.cell_rhs(i) += f_ext;
-                  }
-                continue;
-              }
-            // Follower: -p(x) cof(F) N dA on the current face, x = X + d.
-            const Tensor2      F = I + scratch.face_grad_d[q];
-            const Point<3>     x = X + scratch.face_d[q];
-            const double       p = load.pressure(current_load, x, face);
-            const Tensor<1, 3> a = cofactor_times(F, N) * dA;
-            // Potential from the rest shape: Q . a now, less at X + w.
-            const Tensor2 G = I + scratch.face_grad_w[q];
-            copy.energy +=
-              load.potential_flux(current_load, x, face) * a -
-              load.potential_flux(current_load, X + scratch.face_w[q], face) *
-                cofactor_times(G, N) * dA;
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                const double f_ext = -p * fv.shape_value(i, q) *
-                                     a[fe_.system_to_component_index(i).first];
-                copy.cell_external(i) += f_ext;
-                copy.cell_rhs(i) += f_ext;
-              }
-            if (!matrix)
-              continue;
-            // K_ij = -d f_i / d u_j = phi_i (dp_j a + p da_j)[c_i].
-            const Tensor<1, 3> grad_p =
-              load.pressure_gradient(current_load, x, face);
-            for (unsigned int j = 0; j < n_dofs; ++j)
-              {
-                const unsigned int cj = fe_.system_to_component_index(j).first;
-                const double       phi_j = fv.shape_value(j, q);
-                const Tensor<1, 3> dt =
-                  grad_p[cj] * phi_j * a +
-                  p * cofactor_derivative(F, N, cj, fv.shape_grad(j, q)) * dA;
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  K(i, j) += fv.shape_value(i, q) *
-                             dt[fe_.system_to_component_index(i).first];
-              }
-          }
-      }
-    if (!(matrix && follower && any_face))
-      return;
-    // Where the load is conservative its assembled tangent is symmetric,
-    // and so is the sum of the faces' symmetric parts: the exact tangent
-    // for the symmetric solvers.
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      for (unsigned int j = 0; j < n_dofs; ++j)
-        copy.cell_matrix(i, j) +=
-          symmetric_tangent ? 0.5 * (K(i, j) + K(j, i)) : K(i, j);
+    const LoadCell c{cell,
+                     d_buffer,
+                     w_buffer,
+                     current_load,
+                     matrix,
+                     scratch.faces,
+                     copy.cell_matrix,
+                     copy.cell_rhs,
+                     copy.cell_external,
+                     copy.energy};
+    // Dead loads (gravity, a dead pressure): their potential is
+    // -f_ext . (d - w), the work done from the rest shape. A follower
+    // pressure or a support adds its own potential.
+    for (const auto &term : load_terms)
+      if (term->dead())
+        term->assemble_faces(c);
+    for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
+      copy.energy -= copy.cell_external(i) *
+                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
+    for (const auto &term : load_terms)
+      if (!term->dead())
+        term->assemble_faces(c);
   }
 
   bool
@@ -442,11 +309,17 @@ namespace RestShape
   }
 
   bool
-  ForwardProblem::evaluate(const bool with_tangent)
+  ForwardProblem::evaluate_residual()
   {
     make_newton_constraints();
-    return assemble(with_tangent ? Assemble::residual_and_matrix :
-                                   Assemble::residual);
+    return assemble(Assemble::residual);
+  }
+
+  bool
+  ForwardProblem::evaluate_with_tangent()
+  {
+    make_newton_constraints();
+    return assemble(Assemble::residual_and_matrix);
   }
 
 } // namespace RestShape

@@ -193,28 +193,9 @@ namespace RestShape
   ForwardProblem::elastic_support_force() const
   {
     Tensor<1, 3> force;
-    const double k = parameters.boundary.support_stiffness;
-    if (k > 0)
-      {
-        FEFaceValues<3>                  ffv(*mapping_,
-                            fe_,
-                            face_quadrature_,
-                            update_values | update_gradients |
-                              update_normal_vectors | update_JxW_values);
-        const FEValuesExtractors::Vector u(0);
-        std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size()),
-          face_w(face_quadrature_.size());
-        std::vector<Tensor2> grad_w(face_quadrature_.size());
-        for_each_boundary_face(support_labels, [&](const auto &cell, auto f) {
-          ffv.reinit(cell, f);
-          ffv[u].get_function_values(d_ghost, face_d);
-          ffv[u].get_function_values(w_ghost, face_w);
-          ffv[u].get_function_gradients(w_ghost, grad_w);
-          for (const unsigned int q : ffv.quadrature_point_indices())
-            force -= k * (face_d[q] - face_w[q]) *
-                     rest_area(grad_w[q], ffv.normal_vector(q)) * ffv.JxW(q);
-        });
-      }
+    for (const auto &term : load_terms)
+      if (term->is_support())
+        force += term->local_resultant(current_load, d_ghost, w_ghost);
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);
     return force;
@@ -245,39 +226,9 @@ namespace RestShape
   ForwardProblem::surface_force(const LoadState &load) const
   {
     Tensor<1, 3> force;
-    if (surface_load_->acts(load))
-      {
-        const bool                       follower = surface_load_->follower();
-        FEFaceValues<3>                  ffv(*mapping_,
-                            fe_,
-                            face_quadrature_,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_normal_vectors |
-                              update_JxW_values);
-        const FEValuesExtractors::Vector u(0);
-        std::vector<Tensor<1, 3>>        face_d(face_quadrature_.size());
-        std::vector<Tensor2>             grad_d(face_quadrature_.size());
-        const Tensor2                    I = unit_symmetric_tensor<3>();
-        for_each_boundary_face(pressure_labels, [&](const auto &cell, auto f) {
-          ffv.reinit(cell, f);
-          const SurfaceLoad::Face face =
-            opening.defined() && opening.contains(cell->face(f)->center()) ?
-              SurfaceLoad::Face::opened :
-              SurfaceLoad::Face::covered;
-          ffv[u].get_function_values(d_ghost, face_d);
-          ffv[u].get_function_gradients(d_ghost, grad_d);
-          for (const unsigned int q : ffv.quadrature_point_indices())
-            {
-              const Point<3>     &X = ffv.quadrature_point(q);
-              const Tensor<1, 3> &N = ffv.normal_vector(q);
-              force -=
-                follower ?
-                  surface_load_->pressure(load, X + face_d[q], face) *
-                    cofactor_times(I + grad_d[q], N) * ffv.JxW(q) :
-                  surface_load_->pressure(load, X, face) * N * ffv.JxW(q);
-            }
-        });
-      }
+    for (const auto &term : load_terms)
+      if (!term->is_support())
+        force += term->local_resultant(load, d_ghost, w_ghost);
     for (unsigned int c = 0; c < 3; ++c)
       force[c] = Utilities::MPI::sum(force[c], comm);
     return force;

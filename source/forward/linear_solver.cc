@@ -144,7 +144,7 @@ namespace RestShape
   {
     last_matrix = &A;
     if (parameters.linear_solver == LinearSolverType::cg_amg)
-      setup_amg(A, false);
+      setup_amg(A, AmgSetup::as_configured);
     else
       factorise(A);
   }
@@ -197,14 +197,14 @@ namespace RestShape
   }
 
   bool
-  LinearSolver::setup_amg(const MatrixType &A, const bool force_rebuild)
+  LinearSolver::setup_amg(const MatrixType &A, const AmgSetup how)
   {
     std::unique_ptr<TimerOutput::Scope> scope;
     if (timer != nullptr)
       scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
     const bool same_matrix =
       amg != nullptr && amg_matrix == &A.trilinos_matrix();
-    if (same_matrix && !force_rebuild)
+    if (same_matrix && how == AmgSetup::as_configured)
       switch (parameters.amg_update)
         {
           case AmgUpdate::reuse_aggregates:
@@ -302,7 +302,7 @@ namespace RestShape
                                   const double      relative_tolerance)
   {
     const double target = relative_tolerance * b.l2_norm();
-    if (setup_amg(A, false))
+    if (setup_amg(A, AmgSetup::as_configured))
       return run_krylov(A, x, b, target);
 
     // Lagged AMG (an earlier step's): CG with it, bounded by what the AMG
@@ -319,7 +319,7 @@ namespace RestShape
           amg_stale = true;
         return control.last_step();
       }
-    setup_amg(A, true);
+    setup_amg(A, AmgSetup::rebuild);
     return control.last_step() + run_krylov(A, x, b, target);
   }
 

@@ -32,13 +32,13 @@ namespace RestShape
     for (const Label label : labels)
       {
         Entry e;
-        e.E            = prm.youngs_modulus(label);
-        e.rho          = prm.density(label);
-        e.law_name     = law_names[std::size_t(laws(label))];
-        e.law          = create_material_law(e.law_name,
-                                    LawParameters{e.E,
-                                                  prm.poissons_ratio(label),
-                                                  prm.ogden_alpha(label)});
+        e.E   = prm.youngs_modulus(label);
+        e.rho = prm.density(label);
+
+        LawParameters law{e.E, prm.poissons_ratio(label), {}};
+        for (const auto &[name, values] : prm.law_values)
+          law.values[name] = values(label);
+        e.law = create_material_law(law_names[std::size_t(laws(label))], law);
         entries[label] = e;
       }
   }
@@ -47,12 +47,6 @@ namespace RestShape
   MaterialTable::law(const Label label) const
   {
     return *entries.at(label).law;
-  }
-
-  const std::string &
-  MaterialTable::law_name(const Label label) const
-  {
-    return entries.at(label).law_name;
   }
 
   double

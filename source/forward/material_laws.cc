@@ -23,16 +23,33 @@ namespace RestShape
       return [](const LawParameters &p) { return std::make_unique<Law>(p); };
     }
 
-    /// Every law: its name (as Materials/Material law takes it) and how
-    /// to make it. A new law is one file and one line here.
-    const std::vector<std::pair<std::string, Factory>> &
+    /// What the registry knows of a law: its name (as Materials/Material
+    /// law takes it), how to make it, and its own parameters.
+    struct Registration
+    {
+      std::string               name;
+      Factory                   make;
+      std::vector<LawParameter> parameters = {};
+    };
+
+    /// Every law. A new law is one class and one line here.
+    const std::vector<Registration> &
     registry()
     {
-      static const std::vector<std::pair<std::string, Factory>> laws = {
+      static const std::vector<Registration> laws = {
         {"corotational", factory<CorotationalLaw>()},
         {"neo-Hookean", factory<NeoHookeanLaw>()},
-        {"Ogden", factory<OgdenLaw>()}};
+        {"Ogden", factory<OgdenLaw>(), OgdenLaw::parameters()}};
       return laws;
+    }
+
+    /// " for label 3", " (all labels)" or " (the default '*')".
+    std::string
+    where(const LabelValues &values, const Label label)
+    {
+      if (label != dealii::numbers::invalid_material_id)
+        return " for label " + std::to_string(label);
+      return values.per_label.empty() ? " (all labels)" : " (the default '*')";
     }
   } // namespace
 
@@ -40,8 +57,8 @@ namespace RestShape
   material_law_names()
   {
     std::vector<std::string> names;
-    for (const auto &[name, make] : registry())
-      names.push_back(name);
+    for (const Registration &law : registry())
+      names.push_back(law.name);
     return names;
   }
 
@@ -51,21 +68,68 @@ namespace RestShape
     const std::string trimmed = dealii::Utilities::trim(name);
     const auto       &laws    = registry();
     for (std::size_t i = 0; i < laws.size(); ++i)
-      if (laws[i].first == trimmed)
+      if (laws[i].name == trimmed)
         return i;
     std::string known;
-    for (const auto &[law, make] : laws)
-      known += (known.empty() ? "" : ", ") + law;
+    for (const Registration &law : laws)
+      known += (known.empty() ? "" : ", ") + law.name;
     throw InputError("",
                      parameter,
                      "unknown material law '" + trimmed +
                        "'; expected one of " + known);
   }
 
+  void
+  declare_material_law_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    for (const Registration &law : registry())
+      for (const LawParameter &p : law.parameters)
+        prm.declare_entry(p.name,
+                          p.default_value,
+                          dealii::Patterns::Anything(),
+                          p.help);
+    prm.leave_subsection();
+  }
+
+  std::vector<LabelListEntry>
+  material_law_label_entries()
+  {
+    std::vector<LabelListEntry> entries;
+    for (const Registration &law : registry())
+      for (const LawParameter &p : law.parameters)
+        entries.push_back({"Materials", p.name, true});
+    return entries;
+  }
+
+  void
+  parse_material_law_parameters(dealii::ParameterHandler &prm,
+                                MaterialParameters       &materials)
+  {
+    prm.enter_subsection("Materials");
+    for (const Registration &law : registry())
+      for (const LawParameter &p : law.parameters)
+        materials.law_values[p.name] =
+          LabelValues::parse(prm.get(p.name), "Materials/" + p.name);
+    prm.leave_subsection();
+    for (const Registration &law : registry())
+      for (const LawParameter &p : law.parameters)
+        {
+          const LabelValues &values = materials.law_values[p.name];
+          for (const auto &[label, v] : values.listed())
+            if (const std::string expected = p.check(v); !expected.empty())
+              throw InputError("",
+                               "Materials/" + p.name,
+                               p.symbol + " = " + number_text(v) +
+                                 where(values, label) + "; expected " +
+                                 expected);
+        }
+  }
+
   std::unique_ptr<MaterialLaw>
   create_material_law(const std::string &name, const LawParameters &parameters)
   {
-    return registry()[material_law_index(name, "Materials/Material law")]
-      .second(parameters);
+    return registry()[material_law_index(name, "Materials/Material law")].make(
+      parameters);
   }
 } // namespace RestShape

@@ -1,5 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <restshape/base/input_error.h>
 #include <restshape/forward/ln_j_terms.h>
 #include <restshape/forward/ogden_law.h>
 
@@ -15,6 +16,11 @@ namespace RestShape
     /// Eigenvalues below this relative difference count as equal (their
     /// divided difference becomes the derivative at their mean).
     constexpr double equal_eigenvalues = 1e-7;
+    /// Bennion et al. 2022's fit to in vivo positional brain shift.
+    constexpr double default_alpha = -19;
+    /// stretch^alpha overflows beyond.
+    constexpr double  max_alpha  = 100;
+    const std::string alpha_name = "Ogden alpha";
 
     /// The spectral form of C: eigenvalues c_a and orthonormal vectors.
     struct Spectrum
@@ -40,8 +46,31 @@ namespace RestShape
 
   OgdenLaw::OgdenLaw(const LawParameters &parameters)
     : MaterialLaw(parameters)
-    , alpha(parameters.ogden_alpha)
+    , alpha(parameters.value(alpha_name, default_alpha))
   {}
+
+  std::vector<LawParameter>
+  OgdenLaw::parameters()
+  {
+    return {{alpha_name,
+             number_text(default_alpha),
+             "The exponent alpha of the Ogden law (dimensionless, "
+             "nonzero, |alpha| <= 100): one value or 'label:value' "
+             "list (ranges and '*' as for Young's modulus). "
+             "Negative values stiffen the tissue in compression "
+             "more than in tension, as brain tissue does (alpha = "
+             "-19 with mu = 670 Pa fits in vivo positional brain "
+             "shift, Bennion et al. 2022); alpha = 2 is the "
+             "neo-Hookean law. Used by labels whose Material law "
+             "is Ogden.",
+             "alpha",
+             [](const double a) {
+               return a != 0 && std::abs(a) <= max_alpha ?
+                        std::string() :
+                        "a nonzero exponent with |alpha| <= " +
+                          number_text(max_alpha);
+             }}};
+  }
 
   bool
   OgdenLaw::evaluate(const Tensor2    &F,

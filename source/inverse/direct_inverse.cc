@@ -102,7 +102,7 @@ namespace RestShape
   DirectInverse::residual(const VectorType &w, VectorType &r)
   {
     forward.set_state(d, w, load);
-    const bool valid = forward.evaluate(false);
+    const bool valid = forward.evaluate_residual();
     r                = forward.condensed_residual();
     if (obstacle_force.size() > 0)
       r.add(fraction, obstacle_force);

@@ -21,6 +21,7 @@
 #include <restshape/base/parameters.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/linear_solver.h>
+#include <restshape/forward/registered_parameters.h>
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <filesystem>
@@ -149,6 +150,7 @@ main(int argc, char **argv)
     {
       ParameterHandler prm;
       Parameters::declare_parameters(prm);
+      declare_registered_parameters(prm);
 
       std::vector<std::string> overrides;
       for (int i = 1; i < argc; ++i)
@@ -204,9 +206,12 @@ main(int argc, char **argv)
       // Names of labels (the mesh's, Mesh/Label names) become labels.
       MeshParameters mesh_parameters;
       mesh_parameters.parse_parameters(prm);
-      Parameters::replace_label_names(prm, scene_label_names(mesh_parameters));
+      Parameters::replace_label_names(prm,
+                                      scene_label_names(mesh_parameters),
+                                      registered_label_entries());
       Parameters parameters;
-      parameters.parse_parameters(prm, scenarios);
+      parameters.parse_parameters(prm, scenarios, registered_label_entries());
+      parse_registered_parameters(prm, parameters);
       // Destroy the simulator (and its TimerOutput, which prints a banner
       // when destroyed during stack unwinding) before reporting an error.
       std::exception_ptr error;

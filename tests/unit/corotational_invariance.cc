@@ -186,16 +186,16 @@ namespace
       }
     LoadState no_load;
     f.set_state(d, w, no_load);
-    f.evaluate(false);
+    f.evaluate_residual();
     // Scale: the internal force of a 1 % stretch.
     VectorType stretch = f.zero_vector();
     for (const Node &node : f.owned_nodes())
       stretch[node.dofs[0]] = 0.01 * node.position[0];
     f.set_state(stretch, w, no_load);
-    f.evaluate(false);
+    f.evaluate_residual();
     const double scale = f.raw_residual().l2_norm();
     f.set_state(d, w, no_load);
-    f.evaluate(false);
+    f.evaluate_residual();
     check_below(name + ": |f_int(rigid rotation)| / |f_int(1% stretch)|",
                 f.raw_residual().l2_norm() / scale,
                 1e-10);
@@ -216,7 +216,7 @@ namespace
             v[node.dofs[c]] = 1e-3 * random();
         }
     f.set_state(state, w, no_load);
-    f.evaluate(true);
+    f.evaluate_with_tangent();
     VectorType Kv = f.zero_vector();
     f.tangent_matrix().vmult(Kv, v);
     const double h  = 1e-4;
@@ -224,10 +224,10 @@ namespace
     sp.add(h, v);
     sm.add(-h, v);
     f.set_state(sp, w, no_load);
-    f.evaluate(false);
+    f.evaluate_residual();
     VectorType diff = f.raw_residual();
     f.set_state(sm, w, no_load);
-    f.evaluate(false);
+    f.evaluate_residual();
     diff -= f.raw_residual();
     diff /= 2 * h; // = -K v at free DoFs
     double error = 0, norm = 0;

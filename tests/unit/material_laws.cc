@@ -93,7 +93,7 @@ namespace
   void
   general_checks(const std::string &name)
   {
-    const auto    law = create_material_law(name, LawParameters{E, nu});
+    const auto    law = create_material_law(name, LawParameters{E, nu, {}});
     const Tensor2 F   = general_F();
     const Tensor2 Q   = rotation(0.7, Tensor<1, 3>({1., -2., 0.5}));
     check_below(name + ": tangent against differences of P",
@@ -177,7 +177,7 @@ namespace
   void
   neo_hookean_closed_forms()
   {
-    const auto   law    = create_material_law("neo-Hookean", {E, nu});
+    const auto   law    = create_material_law("neo-Hookean", {E, nu, {}});
     const double mu     = law->mu;
     const double lambda = law->lambda;
     const double gamma  = 0.8;
@@ -208,7 +208,7 @@ namespace
                 std::abs(P[1][1] - lambda * ln_s) / mu,
                 1e-12);
 
-    const auto free_law = create_material_law("neo-Hookean", {E, 0.});
+    const auto free_law = create_material_law("neo-Hookean", {E, 0., {}});
     free_law->evaluate(diagonal(1.7, 1, 1), P, nullptr, TangentType::warped);
     check_below("neo-Hookean uniaxial stretch, nu = 0: P_11 = mu (s - 1/s)",
                 std::abs(P[0][0] - free_law->mu * (1.7 - 1 / 1.7)) / E,
@@ -232,7 +232,7 @@ namespace
   ogden_closed_forms()
   {
     // alpha = 2 is the neo-Hookean law, stress and tangent.
-    LawParameters two{E, nu, 2.};
+    LawParameters two{E, nu, {{"Ogden alpha", 2.}}};
     const auto    ogden = create_material_law("Ogden", two);
     const auto    neo   = create_material_law("neo-Hookean", two);
     Tensor2       P_ogden, P_neo;
@@ -275,7 +275,8 @@ namespace
     for (const double alpha : {-19., 5.})
       {
         const auto law =
-          create_material_law("Ogden", LawParameters{E, 0., alpha});
+          create_material_law("Ogden",
+                              LawParameters{E, 0., {{"Ogden alpha", alpha}}});
         Tensor2 F = diagonal(0.8, 1, 1), P;
         law->evaluate(F, P, nullptr, TangentType::warped);
         const double P_11 =

@@ -86,7 +86,7 @@ namespace
     LoadState        load;
     load.pressure = p;
     f.set_state(d, f.zero_vector(), load);
-    f.evaluate(false);
+    f.evaluate_residual();
     // The external force of a node is about p times its area: compare with
     // the pressure's force on the whole ball over the number of nodes.
     const double area_per_node = 4 * M_PI * radius * radius * lambda * lambda /
@@ -175,7 +175,7 @@ namespace
       VectorType x = d;
       x.add(s, v);
       f.set_state(x, f.zero_vector(), load);
-      f.evaluate(false);
+      f.evaluate_residual();
       return f.owned_copy(f.raw_residual());
     };
     const double e  = 1e-6;
@@ -183,7 +183,7 @@ namespace
     fd -= residual_at(e);
     fd /= 2 * e;
     f.set_state(d, f.zero_vector(), load);
-    f.evaluate(true);
+    f.evaluate_with_tangent();
     VectorType Kv = f.zero_vector();
     f.tangent_matrix().vmult(Kv, v);
     const double norm = Kv.l2_norm();

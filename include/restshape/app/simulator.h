@@ -54,8 +54,14 @@ namespace RestShape
     record_failure(const std::string &what);
     void
     make_mesh();
+    /// The scene's checks that need only the mesh: labels, refinement,
+    /// scenarios.
     void
-    check_scene() const;
+    check_scene_on_mesh() const;
+    /// Those that need the forward problem: stability with a
+    /// non-symmetric tangent, unheld pieces, unfixed components.
+    void
+    check_scene_on_problem() const;
     /// The labels Boundary conditions/Fixed labels holds (any component).
     std::set<Label>
     held_labels() const;

@@ -14,6 +14,9 @@
 #include <restshape/base/label_values.h>
 #include <restshape/base/region.h>
 
+#include <functional>
+#include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -105,7 +108,8 @@ namespace RestShape
     /// Materials/Material law as written: a law's name, or 'label:name'
     /// list (parsed against the laws by MaterialTable).
     std::string law = "corotational";
-    LabelValues ogden_alpha; // -, Materials/Ogden alpha
+    /// The laws' own parameters (forward/material_laws.h), by name.
+    std::map<std::string, LabelValues> law_values;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -321,6 +325,21 @@ namespace RestShape
   };
 
   /// All subsections together: what a scene file describes.
+  /// A parameter that names labels.
+  struct LabelListEntry
+  {
+    std::string section, entry;
+    /// A list of label:value (a lone value is a value for all labels).
+    bool values;
+  };
+
+  class LoadTerm;
+  struct LoadContext;
+  /// Makes a load term of the registry (forward/load_terms.h) that a scene
+  /// enables, with its parameters' values, on a discretisation.
+  using LoadTermFactory =
+    std::function<std::unique_ptr<LoadTerm>(const LoadContext &)>;
+
   struct Parameters
   {
     MeshParameters           mesh;
@@ -339,14 +358,19 @@ namespace RestShape
     /// Every parameter that names labels, as written (checked against the
     /// mesh's labels by the Simulator).
     std::vector<LabelList> label_lists;
+    /// The registry's load terms the scene enables (parse_load_terms()).
+    std::vector<LoadTermFactory> load_terms;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /// Throws InputError (without file name; the caller adds it).
     /// @p scenario_names: the named scenarios declared (read_scene()).
+    /// @p more_label_lists: parameters declared elsewhere that name labels
+    /// (load_term_label_entries()).
     void
-    parse_parameters(dealii::ParameterHandler       &prm,
-                     const std::vector<std::string> &scenario_names = {});
+    parse_parameters(dealii::ParameterHandler          &prm,
+                     const std::vector<std::string>    &scenario_names   = {},
+                     const std::vector<LabelListEntry> &more_label_lists = {});
 
     /**
      * Replace the label names in every label list of @p prm by their
@@ -354,7 +378,10 @@ namespace RestShape
      * InputError naming the parameter for an unknown name.
      */
     static void
-    replace_label_names(dealii::ParameterHandler &prm, const LabelNames &names);
+    replace_label_names(
+      dealii::ParameterHandler          &prm,
+      const LabelNames                  &names,
+      const std::vector<LabelListEntry> &more_label_lists = {});
   };
 } // namespace RestShape
 

@@ -1,8 +1,9 @@
-// The forward problem: static equilibrium of the co-rotational body under
-// gravity, surface pressure, fixed labels (and contact), by Newton's method
-// with line search and load stepping. Implemented in forward_problem.cc
-// (set-up, state, postprocessing), forward_problem_assembly.cc and
-// forward_problem_newton.cc.
+// The forward problem: static equilibrium of the body under its load terms
+// (load_term.h: body force, surface pressure, elastic support and those of
+// the registry), fixed labels (and contact), by Newton's method with line
+// search and load stepping. Implemented in forward_problem.cc (set-up,
+// state), forward_problem_assembly.cc, forward_problem_loads.cc,
+// forward_problem_newton.cc and forward_problem_results.cc.
 #ifndef restshape_forward_problem_h
 #define restshape_forward_problem_h
 
@@ -19,10 +20,12 @@
 #include <restshape/base/parameters.h>
 #include <restshape/forward/active_set_constraints.h>
 #include <restshape/forward/contact_conditions.h>
+#include <restshape/forward/discretization.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/load_state.h>
+#include <restshape/forward/load_term.h>
 #include <restshape/forward/material.h>
-#include <restshape/forward/surface_load.h>
+#include <restshape/forward/surface_pressure.h>
 #include <restshape/forward/tangent_strategy.h>
 #include <restshape/mesh/labelled_mesh.h>
 
@@ -34,13 +37,6 @@
 
 namespace RestShape
 {
-
-  /// A mesh node: its three displacement DoFs and its mesh position (m).
-  struct Node
-  {
-    std::array<dealii::types::global_dof_index, 3> dofs;
-    dealii::Point<3>                               position;
-  };
 
   struct SolveStatistics
   {
@@ -108,7 +104,7 @@ namespace RestShape
   cell_location_text(const dealii::types::material_id label,
                      const dealii::Point<3>          &center);
 
-  class ForwardProblem
+  class ForwardProblem : public Discretization
   {
   public:
     /// Relative residual at which Newton stops (Solver/Newton tolerance).
@@ -182,38 +178,6 @@ namespace RestShape
     /// Set the state (owned vectors); the caller vouches for equilibrium.
     void
     set_state(const VectorType &d, const VectorType &w, const LoadState &l);
-    /// A zero owned vector with the DoF layout.
-    VectorType
-    zero_vector() const;
-
-    /// An owned copy of @p v (owned or ghosted): Trilinos adds, subtracts
-    /// and compares only vectors of the same layout.
-    VectorType
-    owned_copy(const VectorType &v) const;
-    /// A ghosted copy of the owned vector @p v (read access to the values
-    /// at the locally relevant DoFs).
-    VectorType
-    ghosted_copy(const VectorType &v) const;
-
-    /**
-     * A displacement-like field from values at the mesh vertices (indexed
-     * by triangulation vertex), interpolated linearly (P1/Q1) into the
-     * finite element space (owned vector).
-     */
-    VectorType
-    interpolate_vertex_field(
-      const std::vector<dealii::Tensor<1, 3>> &values) const;
-    /// weights[b][v]: the linear (P1/Q1) shape function of the cell's
-    /// vertex v at the support point b of the base element: a node's value
-    /// interpolated linearly from the vertices.
-    std::vector<std::vector<double>>
-    vertex_weights() const;
-
-    /// Smallest det(I + grad w) over the quadrature points of the cell on
-    /// which @p fe_values (gradients) was last reinitialised; @p w ghosted.
-    static double
-    smallest_jacobian(const dealii::FEValues<3> &fe_values,
-                      const VectorType          &w);
 
     /**
      * Check a rest displacement: false (with the number of bad cells) if
@@ -226,35 +190,6 @@ namespace RestShape
                         unsigned int     &n_bad,
                         std::string      *where = nullptr) const;
 
-    // --- discretisation ------------------------------------------------
-    const dealii::DoFHandler<3> &
-    dof_handler() const;
-    const dealii::Mapping<3> &
-    mapping() const;
-    const dealii::FESystem<3> &
-    fe() const;
-    const dealii::Quadrature<2> &
-    face_quadrature() const;
-    const dealii::AffineConstraints<double> &
-    base_constraints() const;
-    const dealii::IndexSet &
-    locally_owned_dofs() const;
-    const dealii::IndexSet &
-    locally_relevant_dofs() const;
-    /// Locally owned nodes (all support points, vertices and for degree 2
-    /// edge/face/cell nodes), with their mesh positions.
-    const std::vector<Node> &
-    owned_nodes() const;
-    /// Nodes of locally owned and ghost cells.
-    const std::vector<Node> &
-    relevant_nodes() const;
-    bool
-    is_fixed(const dealii::types::global_dof_index dof) const;
-    /// Whether some node is fixed in x, y, z (over all ranks).
-    std::array<bool, 3>
-    fixed_components() const;
-    const LabelledMesh &
-    mesh() const;
     /// The scene's parameters.
     const Parameters &
     scene_parameters() const
@@ -315,16 +250,17 @@ namespace RestShape
     /// with Fluid load = buoyancy) plus surface_force().
     dealii::Tensor<1, 3>
     total_external_force(const LoadState &load) const;
-    /// Resultant (N) of the surface pressure of @p load at the current
-    /// state: on the current surface for a follower load, on the mesh's
-    /// faces for a dead one.
+    /// Resultant (N) of the surface loads of @p load at the current state
+    /// (the pressure: on the current surface for a follower load, on the
+    /// mesh's faces for a dead one; the registry's face loads), supports
+    /// left out.
     dealii::Tensor<1, 3>
     surface_force(const LoadState &load) const;
     /// The surface pressure, its level and whether it follows the surface.
     const SurfaceLoad &
     surface_load() const;
     /// Whether the tangent is symmetric: false for a follower pressure on a
-    /// surface with free edges (not conservative).
+    /// surface with free edges (not conservative), or a load term's own.
     bool
     tangent_is_symmetric() const;
 
@@ -348,12 +284,15 @@ namespace RestShape
     double
     potential_energy() const;
     /**
-     * Assemble at the current state (for tests and diagnostics): the raw
-     * residual and, if @p with_tangent, the tangent (Dirichlet rows
-     * condensed). Returns false if a cell is inverted.
+     * Assemble the raw residual at the current state (for the direct
+     * inverse, tests and diagnostics). Returns false if a cell is
+     * inverted.
      */
     bool
-    evaluate(const bool with_tangent);
+    evaluate_residual();
+    /// evaluate_residual() and the tangent (Dirichlet rows condensed).
+    bool
+    evaluate_with_tangent();
 
     /// The contact conditions checked at the end of the last Newton solve
     /// with contact (ActiveSetConstraints::check_conditions()).
@@ -395,11 +334,6 @@ namespace RestShape
     {
       return constraints_newton;
     }
-    const dealii::Quadrature<3> &
-    quadrature() const
-    {
-      return cell_quadrature;
-    }
 
     /// The tangent of the last evaluate(true) or Newton step.
     const MatrixType &
@@ -425,21 +359,6 @@ namespace RestShape
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.
     LinearSolverType
     resolve_linear_solver() const;
-    /// Call @p f(cell, face) for every boundary face of the locally owned
-    /// cells (with @p ghosts: of the owned and ghost cells) of @p labels.
-    template <typename Function>
-    void
-    for_each_boundary_face(const std::set<Label> &labels,
-                           Function             &&f,
-                           const bool             ghosts = false) const
-    {
-      for (const auto &cell : dof_handler_.active_cell_iterators())
-        if ((ghosts ? !cell->is_artificial() : cell->is_locally_owned()) &&
-            labels.count(cell->material_id()))
-          for (const unsigned int face : cell->face_indices())
-            if (labelled_mesh.at_surface(*cell, face))
-              f(cell, face);
-    }
     struct ScratchData;
     struct CopyData;
     enum class Assemble
@@ -451,49 +370,29 @@ namespace RestShape
       residual_and_magnitudes
     };
 
+    /// The load terms: the body force, the surface pressure, the elastic
+    /// support, and those the scene enables from the registry
+    /// (Parameters::load_terms). Throws InputError if the fluid wets no
+    /// pressure face.
     void
-    setup_nodes();
-    /// The surface load, its fluid level (the given one, or the highest
-    /// point of the pressure faces against gravity) and whether the tangent
-    /// is symmetric. Throws InputError if the fluid wets no pressure face.
-    void
-    setup_surface_load();
-    /// Whether the pressure faces form a closed surface or one whose edges
-    /// are held (every DoF on them fixed): then a follower pressure is
-    /// conservative and its assembled tangent symmetric.
-    bool
-    pressure_surface_is_closed_or_held() const;
-    /// Whether @p dof is fixed, or a hanging DoF whose constraint involves
-    /// fixed DoFs only.
-    bool
-    is_held(const dealii::types::global_dof_index dof) const;
-    /// The mass density (kg/m^3) on which the body acceleration acts in
-    /// @p cell: reduced by the fluid's with Fluid load = buoyancy, times the
-    /// mesh's mass ratio (LabelledMesh::mass_ratio()).
-    double
-    effective_density(const dealii::CellAccessor<3, 3> &cell) const;
+    setup_load_terms();
     /// Whether the body force of @p load varies within a cell (the fluid
     /// drained above a level that may cross it).
     bool
     body_force_varies(const LoadState &load) const;
     /// The body force per unit mesh volume (N/m^3) of @p load at the point
-    /// @p X of @p cell (mesh geometry): effective_density() times the
-    /// acceleration, plus the tissue acceleration on the full density, plus
-    /// the buoyancy lost where the fluid is drained.
+    /// @p X of @p cell (mesh geometry): the sum of the load terms'.
     dealii::Tensor<1, 3>
     body_force(const dealii::CellAccessor<3, 3> &cell,
                const dealii::Point<3>           &X,
                const LoadState                  &load) const;
-    /// The surface pressure on the boundary faces of @p cell: dead
-    /// tractions, or the follower load with its tangent and potential.
+    /// The face terms of the load terms on @p cell: first the dead ones,
+    /// then the dead loads' potential -f_ext . (d - w), then the others.
     void
-    assemble_pressure(
-      const typename dealii::DoFHandler<3>::active_cell_iterator &cell,
-      ScratchData                                                &scratch,
-      CopyData                                                   &copy,
-      const bool                                                  matrix) const;
-    void
-    setup_constraints();
+    assemble_load_terms(const CellIterator &cell,
+                        ScratchData        &scratch,
+                        CopyData           &copy,
+                        const bool          matrix) const;
     void
     make_newton_constraints();
     void
@@ -635,29 +534,12 @@ namespace RestShape
                      const double previous_eta,
                      const double target) const;
 
-    const Parameters           &parameters;
-    LabelledMesh               &labelled_mesh;
     const MaterialTable        &material_table;
     dealii::TimerOutput        &timer;
     dealii::ConditionalOStream &pcout;
     LinearSolverType            linear_solver_type = LinearSolverType::direct;
-    const MPI_Comm              comm;
 
-    std::unique_ptr<dealii::Mapping<3>> mapping_;
-    dealii::FESystem<3>                 fe_;
-    dealii::Quadrature<3>               cell_quadrature;
-    dealii::Quadrature<2>               face_quadrature_;
-    dealii::DoFHandler<3>               dof_handler_;
-    dealii::IndexSet                    owned_dofs, relevant_dofs;
-    dealii::AffineConstraints<double>   constraints_hanging;
-    dealii::AffineConstraints<double>   constraints_base;   // hanging + fixed
-    dealii::AffineConstraints<double>   constraints_newton; // + contact
-    std::vector<bool>                   fixed_dof;          // relevant dofs
-    std::vector<Node>                   owned_nodes_, relevant_nodes_;
-    std::set<Label>                     pressure_labels, support_labels;
-    /// Quadrature points of the pressure faces (mesh geometry, m, owned).
-    std::vector<dealii::Point<3>> pressure_points;
-    Region                        opening; // open_surface(); none by default
+    dealii::AffineConstraints<double> constraints_newton; // + contact
 
     MatrixType tangent;
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,
@@ -666,7 +548,6 @@ namespace RestShape
     // The assembly reads d and w from, and adds into, deal.II's distributed
     // vectors (locally relevant entries, element access by an index
     // shift), then copies the sums into the Trilinos vectors above.
-    using BufferType = dealii::LinearAlgebra::distributed::Vector<double>;
     BufferType d_buffer, w_buffer;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
       magnitude_buffer;
@@ -687,9 +568,13 @@ namespace RestShape
     TangentType tangent_type = TangentType::consistent;
     LoadState   current_load;
 
-    ContactConditions            last_conditions;
-    std::unique_ptr<SurfaceLoad> surface_load_;
-    bool symmetric_tangent = true, scene_tangent_symmetric = true;
+    ContactConditions                      last_conditions;
+    std::vector<std::unique_ptr<LoadTerm>> load_terms; // setup_load_terms()
+    /// The built-in terms among them (the surface pressure's level and
+    /// opening are set from outside).
+    SurfacePressure *pressure_term = nullptr;
+    /// The load terms with a body force.
+    std::vector<const LoadTerm *> body_terms;
 
     std::unique_ptr<LinearSolver> linear_solver;
     ActiveSetConstraints         *contact = nullptr;

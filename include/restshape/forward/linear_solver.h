@@ -138,9 +138,15 @@ namespace RestShape
 
     /// Makes the AMG preconditioner for @p A as Solver/AMG update says: a
     /// new build, a recomputation on the aggregates of the first build, or
-    /// (lagged) the existing one. Returns true if it built or recomputed.
+    /// (lagged) the existing one; AmgSetup::rebuild builds it anew
+    /// whatever it says. Returns true if it built or recomputed.
+    enum class AmgSetup
+    {
+      as_configured,
+      rebuild
+    };
     bool
-    setup_amg(const MatrixType &A, const bool force_rebuild);
+    setup_amg(const MatrixType &A, const AmgSetup how);
 
     /// CG (GMRES for a non-symmetric matrix) with the current AMG under
     /// @p control; false (and x = 0) if it does not converge.

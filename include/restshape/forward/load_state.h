@@ -43,6 +43,9 @@ namespace RestShape
    * - opening_pressure (Pa) and opening_fluid: the uniform and the fluid
    *   pressure taken off the pressure faces of an opening of the skull
    *   (ForwardProblem::open_surface()).
+   * - terms: the weight of the loads of the registry's load terms
+   *   (load_terms.h, e.g. Surface traction): 1 in the scene's load, 0
+   *   unloaded.
    *
    * Every term is linear in its vector or weight, so the difference of two
    * load states (what a scenario changes) is a load state too.
@@ -57,6 +60,7 @@ namespace RestShape
     std::vector<FluidColumn> fluid;
     double                   opening_pressure = 0;
     std::vector<FluidColumn> opening_fluid;
+    double                   terms = 0;
   };
 
   /// @p a weighted by @p wa plus @p b weighted by @p wb, columns of the
@@ -109,6 +113,7 @@ namespace RestShape
     load.fluid = combine(start.fluid, 1 - s, end.fluid, s);
     load.opening_fluid =
       combine(start.opening_fluid, 1 - s, end.opening_fluid, s);
+    load.terms       = start.terms + s * (end.terms - start.terms);
     load.fluid_level = end.drained_acceleration.norm_square() > 0 ?
                          end.fluid_level :
                          start.fluid_level;
@@ -128,6 +133,7 @@ namespace RestShape
     d.opening_pressure     = a.opening_pressure - b.opening_pressure;
     d.fluid                = combine(a.fluid, 1, b.fluid, -1);
     d.opening_fluid        = combine(a.opening_fluid, 1, b.opening_fluid, -1);
+    d.terms                = a.terms - b.terms;
     d.fluid_level =
       a.drained_acceleration.norm_square() > 0 ? a.fluid_level : b.fluid_level;
     return d;

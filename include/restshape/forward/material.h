@@ -32,9 +32,6 @@ namespace RestShape
 
     const MaterialLaw &
     law(const Label label) const;
-    /// The name of the law of @p label (Materials/Material law).
-    const std::string &
-    law_name(const Label label) const;
     double
     density(const Label label) const;
     double
@@ -48,7 +45,6 @@ namespace RestShape
     struct Entry
     {
       std::shared_ptr<const MaterialLaw> law;
-      std::string                        law_name;
       double                             E, rho;
     };
     std::map<Label, Entry> entries;

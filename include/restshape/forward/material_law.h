@@ -6,18 +6,44 @@
 
 #include <restshape/base/parameters.h>
 
+#include <functional>
+#include <map>
+#include <string>
+
 namespace RestShape
 {
   using Tensor2 = dealii::Tensor<2, 3>;
   using Tensor4 = dealii::Tensor<4, 3>;
 
   /// What a law is given for one label: its small-strain moduli, and the
-  /// parameters of the laws that have their own.
+  /// values of the parameters the law declares itself (LawParameter).
   struct LawParameters
   {
-    double youngs_modulus = 0;   // Pa
-    double poissons_ratio = 0;   // -
-    double ogden_alpha    = -19; // -, Materials/Ogden alpha
+    double youngs_modulus = 0; // Pa
+    double poissons_ratio = 0; // -
+    /// By parameter name (e.g. "Ogden alpha").
+    std::map<std::string, double> values;
+
+    /// The value of @p name, or @p fallback where it was not given.
+    double
+    value(const std::string &name, const double fallback) const
+    {
+      const auto v = values.find(name);
+      return v == values.end() ? fallback : v->second;
+    }
+  };
+
+  /// A parameter of a law, declared in subsection Materials with a value
+  /// per label (one value or a 'label:value' list).
+  struct LawParameter
+  {
+    std::string name;          // "Ogden alpha"
+    std::string default_value; // "-19"
+    std::string help;          // what it does, its unit, its range
+    std::string symbol;        // its name in an error: "alpha = 0 ..."
+    /// What is expected of a value ("a nonzero exponent with |alpha| <=
+    /// 100"), or "" if @p value is admissible.
+    std::function<std::string(double)> check;
   };
 
   /**

@@ -2,6 +2,8 @@
 #ifndef restshape_forward_material_laws_h
 #define restshape_forward_material_laws_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <restshape/forward/material_law.h>
 
 #include <memory>
@@ -19,6 +21,20 @@ namespace RestShape
   /// is no such law.
   std::size_t
   material_law_index(const std::string &name, const std::string &parameter);
+
+  /// Declare, in subsection Materials, the parameters of every law.
+  void
+  declare_material_law_parameters(dealii::ParameterHandler &prm);
+
+  /// The laws' parameters, each a list of label:value.
+  std::vector<LabelListEntry>
+  material_law_label_entries();
+
+  /// Parse the laws' parameters into @p materials (law_values); throws
+  /// InputError naming the parameter for a value a law does not admit.
+  void
+  parse_material_law_parameters(dealii::ParameterHandler &prm,
+                                MaterialParameters       &materials);
 
   /// A new law of that name with @p parameters.
   std::unique_ptr<MaterialLaw>

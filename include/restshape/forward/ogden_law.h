@@ -25,7 +25,11 @@ namespace RestShape
   class OgdenLaw : public MaterialLaw
   {
   public:
+    /// alpha from the value of Materials/Ogden alpha (-19 if not given).
     explicit OgdenLaw(const LawParameters &parameters);
+    /// Materials/Ogden alpha.
+    static std::vector<LawParameter>
+    parameters();
 
     bool
     evaluate(const Tensor2    &F,

@@ -1,0 +1,31 @@
+// The parameters that the registered material laws (material_laws.h) and
+// load terms (load_terms.h) declare themselves, beside those of Parameters.
+#ifndef restshape_forward_registered_parameters_h
+#define restshape_forward_registered_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <restshape/base/parameters.h>
+
+#include <vector>
+
+namespace RestShape
+{
+  /// Declare them (after Parameters::declare_parameters()).
+  void
+  declare_registered_parameters(dealii::ParameterHandler &prm);
+
+  /// Those that name labels (for Parameters::replace_label_names() and
+  /// Parameters::parse_parameters()).
+  std::vector<LabelListEntry>
+  registered_label_entries();
+
+  /// Parse them into @p parameters (after Parameters::parse_parameters()):
+  /// the laws' values and the load terms the scene enables. Throws
+  /// InputError naming the parameter for a bad value.
+  void
+  parse_registered_parameters(dealii::ParameterHandler &prm,
+                              Parameters               &parameters);
+} // namespace RestShape
+
+#endif

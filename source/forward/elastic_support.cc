@@ -1,0 +1,83 @@
+#include <restshape/forward/elastic_support.h>
+#include <restshape/forward/surface_load.h>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  ElasticSupport::ElasticSupport(const LoadContext &context)
+    : k(context.parameters.boundary.support_stiffness)
+    , labels(
+        context.labels_or_unfixed(context.parameters.boundary.support_labels))
+    , context(context)
+  {}
+
+  void
+  ElasticSupport::assemble_faces(const LoadCell &c) const
+  {
+    if (!(k > 0 && labels.count(c.cell->material_id())))
+      return;
+    const FEValuesExtractors::Vector u(0);
+    const FESystem<3>               &fe     = context.fe;
+    const unsigned int               n_dofs = fe.n_dofs_per_cell();
+    FaceScratch                     &s      = c.scratch;
+    for (const unsigned int f : c.cell->face_indices())
+      if (c.cell->face(f)->at_boundary())
+        {
+          FEFaceValues<3> &fv = s.fe_face_values;
+          fv.reinit(c.cell, f);
+          fv[u].get_function_values(c.d, s.face_d);
+          fv[u].get_function_values(c.w, s.face_w);
+          fv[u].get_function_gradients(c.w, s.face_grad_w);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              const Tensor<1, 3> u_rest = s.face_d[q] - s.face_w[q];
+              const double       JxW =
+                rest_area(s.face_grad_w[q], fv.normal_vector(q)) * fv.JxW(q);
+              c.energy += 0.5 * k * u_rest.norm_square() * JxW;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  const double       phi = fv.shape_value(i, q);
+                  c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
+                  if (c.matrix)
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      if (fe.system_to_component_index(j).first == ci)
+                        c.cell_matrix(i, j) +=
+                          k * phi * fv.shape_value(j, q) * JxW;
+                }
+            }
+        }
+  }
+
+  Tensor<1, 3>
+  ElasticSupport::local_resultant(const LoadState &,
+                                  const VectorType &d,
+                                  const VectorType &w) const
+  {
+    Tensor<1, 3> force;
+    if (!(k > 0))
+      return force;
+    const Quadrature<2>             &quadrature = context.face_quadrature;
+    FEFaceValues<3>                  ffv(context.mapping,
+                        context.fe,
+                        quadrature,
+                        update_values | update_gradients |
+                          update_normal_vectors | update_JxW_values);
+    const FEValuesExtractors::Vector u(0);
+    std::vector<Tensor<1, 3>>        face_d(quadrature.size()),
+      face_w(quadrature.size());
+    std::vector<Tensor2> grad_w(quadrature.size());
+    for_each_boundary_face(
+      context.dof_handler, context.mesh, labels, [&](const auto &cell, auto f) {
+        ffv.reinit(cell, f);
+        ffv[u].get_function_values(d, face_d);
+        ffv[u].get_function_values(w, face_w);
+        ffv[u].get_function_gradients(w, grad_w);
+        for (const unsigned int q : ffv.quadrature_point_indices())
+          force -= k * (face_d[q] - face_w[q]) *
+                   rest_area(grad_w[q], ffv.normal_vector(q)) * ffv.JxW(q);
+      });
+    return force;
+  }
+} // namespace RestShape
