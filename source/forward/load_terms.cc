@@ -1,4 +1,5 @@
 #include <restshape/forward/load_terms.h>
+#include <restshape/forward/surface_traction.h>
 
 #include <functional>
 
@@ -30,7 +31,8 @@ namespace RestShape
     const std::vector<Registration> &
     registry()
     {
-      static const std::vector<Registration> terms = {};
+      static const std::vector<Registration> terms = {
+        registration<SurfaceTraction>()};
       return terms;
     }
   } // namespace
