@@ -35,10 +35,13 @@ namespace RestShape
         e.E   = prm.youngs_modulus(label);
         e.rho = prm.density(label);
 
-        LawParameters law{e.E, prm.poissons_ratio(label), {}};
-        for (const auto &[name, values] : prm.law_values)
-          law.values[name] = values(label);
-        e.law = create_material_law(law_names[std::size_t(laws(label))], law);
+        // A label needs a value of the parameters of its own law only.
+        const std::string &name = law_names[std::size_t(laws(label))];
+        LawParameters      law{e.E, prm.poissons_ratio(label), {}};
+        for (const std::string &p : material_law_parameter_names(name))
+          if (const auto v = prm.law_values.find(p); v != prm.law_values.end())
+            law.values[p] = v->second(label);
+        e.law          = create_material_law(name, law);
         entries[label] = e;
       }
   }

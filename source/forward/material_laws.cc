@@ -79,6 +79,17 @@ namespace RestShape
                        "'; expected one of " + known);
   }
 
+  std::vector<std::string>
+  material_law_parameter_names(const std::string &name)
+  {
+    std::vector<std::string> names;
+    for (const LawParameter &p :
+         registry()[material_law_index(name, "Materials/Material law")]
+           .parameters)
+      names.push_back(p.name);
+    return names;
+  }
+
   void
   declare_material_law_parameters(dealii::ParameterHandler &prm)
   {

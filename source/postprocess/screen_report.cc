@@ -59,10 +59,18 @@ namespace RestShape
              << r.mean_displacement_mm << " mm; force balance " << r.imbalance()
              << " N of " << r.external.norm() << " N; potential energy "
              << in.forward.potential_energy() << " J" << std::endl;
-    if (in.forward.surface_load().acts(in.forward.load()))
+    const bool pressure = in.forward.surface_load().acts(in.forward.load());
+    const std::string kind =
+      in.forward.surface_load().follower() ? "follower" : "dead";
+    // surface_force() sums the pressure and the registry's load terms.
+    if (!in.parameters.load_terms.empty())
+      in.pcout << "  Surface loads: resultant " << r.surface << " N ("
+               << (pressure ? "the " + kind + " pressure and " : "")
+               << "the load terms of the scene, e.g. Surface traction)"
+               << std::endl;
+    else if (pressure)
       in.pcout << "  Surface pressure: resultant " << r.surface << " N ("
-               << (in.forward.surface_load().follower() ? "follower" : "dead")
-               << " load)" << std::endl;
+               << kind << " load)" << std::endl;
     if (in.parameters.boundary.support_stiffness > 0)
       in.pcout << "  Elastic support: force " << r.support << " N" << std::endl;
     if (in.contact)

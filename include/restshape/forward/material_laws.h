@@ -22,6 +22,10 @@ namespace RestShape
   std::size_t
   material_law_index(const std::string &name, const std::string &parameter);
 
+  /// The parameters the law @p name declares (by name).
+  std::vector<std::string>
+  material_law_parameter_names(const std::string &name);
+
   /// Declare, in subsection Materials, the parameters of every law.
   void
   declare_material_law_parameters(dealii::ParameterHandler &prm);
