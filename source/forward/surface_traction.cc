@@ -74,13 +74,20 @@ namespace RestShape
     , context(context)
   {
     region.scale(context.parameters.mesh.length_unit);
-    unsigned int faces = 0;
-    for_each_boundary_face(context.dof_handler,
-                           context.mesh,
-                           labels,
-                           [&](const auto &cell, auto f) {
-                             faces += loaded(cell, f);
-                           });
+    unsigned int    faces = 0;
+    FEFaceValues<3> fv(context.mapping,
+                       context.fe,
+                       context.face_quadrature,
+                       update_JxW_values);
+    for_each_boundary_face(
+      context.dof_handler, context.mesh, labels, [&](const auto &cell, auto f) {
+        if (!loaded(cell, f))
+          return;
+        ++faces;
+        fv.reinit(cell, f);
+        for (const unsigned int q : fv.quadrature_point_indices())
+          area += fv.JxW(q);
+      });
     if (Utilities::MPI::sum(faces, context.comm) == 0)
       throw InputError("",
                        section + "/Region",
@@ -125,19 +132,7 @@ namespace RestShape
                                    const VectorType &,
                                    const VectorType &) const
   {
-    double          area = 0;
-    FEFaceValues<3> fv(context.mapping,
-                       context.fe,
-                       context.face_quadrature,
-                       update_JxW_values);
-    for_each_boundary_face(
-      context.dof_handler, context.mesh, labels, [&](const auto &cell, auto f) {
-        if (!loaded(cell, f))
-          return;
-        fv.reinit(cell, f);
-        for (const unsigned int q : fv.quadrature_point_indices())
-          area += fv.JxW(q);
-      });
+    // A dead traction on the mesh's faces: its resultant is fixed.
     return load.terms * area * traction;
   }
 } // namespace RestShape

@@ -53,6 +53,8 @@ namespace RestShape
     const std::set<Label>      labels;
     Region                     region; // m
     const LoadContext          context;
+    /// The loaded faces' area on this rank (m^2, mesh geometry).
+    double area = 0;
   };
 } // namespace RestShape
 
