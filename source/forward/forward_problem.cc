@@ -1,7 +1,7 @@
 // ForwardProblem: set-up (the discretisation's DoFs, the matrix, the
 // vectors, the linear solver, rigid-body modes) and state. Assembly is in
 // forward_problem_assembly.cc, the load terms in forward_problem_loads.cc,
-// Newton's method and load stepping in forward_problem_newton.cc, the
+// the solves in forward_problem_solve.cc (Newton: newton_solver.cc), the
 // results (norms, stresses, forces, energy) in forward_problem_results.cc.
 
 #include <deal.II/dofs/dof_tools.h>
@@ -33,6 +33,11 @@ namespace RestShape
     , tangent_type(parameters.discretization.tangent == TangentType::adaptive ?
                      TangentType::consistent :
                      parameters.discretization.tangent)
+    , newton_solver(*this,
+                    parameters.solver,
+                    parameters.discretization.tangent,
+                    timer,
+                    pcout)
   {}
 
   ForwardProblem::~ForwardProblem() = default;
@@ -41,6 +46,7 @@ namespace RestShape
   ForwardProblem::set_contact(ActiveSetConstraints *c)
   {
     contact = c;
+    newton_solver.set_contact(c);
   }
 
   void
@@ -50,7 +56,7 @@ namespace RestShape
     // The solver's factorisation refers to the old matrix: release it first.
     linear_solver.reset();
     setup_dofs();
-    make_newton_constraints();
+    make_step_constraints();
 
     DynamicSparsityPattern dsp(relevant_dofs);
     DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_base, true);
@@ -64,7 +70,6 @@ namespace RestShape
                           &residual_raw,
                           &residual_condensed,
                           &external_condensed,
-                          &newton_update,
                           &d,
                           &w})
       v->reinit(owned_dofs, comm);
@@ -96,6 +101,7 @@ namespace RestShape
     linear_solver->set_symmetric(tangent_is_symmetric());
     if (linear_solver_type == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
+    newton_solver.setup(linear_solver.get(), linear_solver_type);
   }
 
   LinearSolverType
@@ -121,8 +127,8 @@ namespace RestShape
     return chosen;
   }
 
-  void
-  ForwardProblem::make_newton_constraints()
+  const AffineConstraints<double> &
+  ForwardProblem::make_step_constraints()
   {
     constraints_newton.clear();
     constraints_newton.reinit(relevant_dofs);
@@ -132,6 +138,7 @@ namespace RestShape
       constraints_base,
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
     constraints_newton.close();
+    return constraints_newton;
   }
 
   void

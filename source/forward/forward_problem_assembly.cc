@@ -311,14 +311,14 @@ namespace RestShape
   bool
   ForwardProblem::evaluate_residual()
   {
-    make_newton_constraints();
+    make_step_constraints();
     return assemble(Assemble::residual);
   }
 
   bool
   ForwardProblem::evaluate_with_tangent()
   {
-    make_newton_constraints();
+    make_step_constraints();
     return assemble(Assemble::residual_and_matrix);
   }
 

@@ -1,9 +1,11 @@
 // The forward problem: static equilibrium of the body under its load terms
 // (load_term.h: body force, surface pressure, elastic support and those of
-// the registry), fixed labels (and contact), by Newton's method with line
-// search and load stepping. Implemented in forward_problem.cc (set-up,
-// state), forward_problem_assembly.cc, forward_problem_loads.cc,
-// forward_problem_newton.cc and forward_problem_results.cc.
+// the registry), fixed labels (and contact). It is the NewtonSystem that
+// its NewtonSolver (newton_solver.h: line search, load stepping) solves.
+// Implemented in forward_problem.cc (set-up, state),
+// forward_problem_assembly.cc, forward_problem_loads.cc,
+// forward_problem_solve.cc (the solves, the tangent's solves) and
+// forward_problem_results.cc.
 #ifndef restshape_forward_problem_h
 #define restshape_forward_problem_h
 
@@ -25,6 +27,8 @@
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/load_term.h>
 #include <restshape/forward/material.h>
+#include <restshape/forward/newton_solver.h>
+#include <restshape/forward/newton_system.h>
 #include <restshape/forward/surface_pressure.h>
 #include <restshape/forward/tangent_strategy.h>
 #include <restshape/mesh/labelled_mesh.h>
@@ -38,73 +42,12 @@
 namespace RestShape
 {
 
-  struct SolveStatistics
-  {
-    bool         converged          = false;
-    unsigned int newton_iterations  = 0; // linear solves, all load steps
-    unsigned int load_steps         = 0; // accepted increments
-    unsigned int linear_iterations  = 0;
-    unsigned int active_set_changes = 0;
-    double       residual           = 0; // final, N
-    double       reference          = 0; // norm of the external loads, N
-    std::string  failure;                // why it did not converge
-    /// The last failed Newton solve failed because its line search's
-    /// trial steps inverted cells.
-    bool cells_inverted = false;
-    /// Fraction of the way from the start to the target load and rest shape
-    /// at which the state is in equilibrium: 1 when converged, less when
-    /// the load-step halvings ran out part of the way (0: not even the
-    /// smallest increment converged).
-    double fraction = 0;
-    /// |R|/|f| after every accepted Newton step of the last load step
-    /// since its constraints (the active contact set) last changed.
-    std::vector<double> residual_history;
-    /// The round-off level of |R|/|f| where it was measured (a stalled
-    /// step; 0: not measured since the constraints last changed).
-    double round_off = 0;
-    /// |K delta - b| of the last Newton step's linear system (N; direct
-    /// solver only): the floor of what that step could reach.
-    double linear_residual = 0;
-    /// Newton converged at that level, above the Newton tolerance (which
-    /// was then not met).
-    bool at_round_off = false;
-  };
-
-  /// The load increments of ForwardProblem::solve(), as fractions of the
-  /// way from the start to the target: an accepted increment doubles the
-  /// next one (up to the rest of the way), a failed one is halved.
-  struct LoadSteps
-  {
-    double done      = 0; // fraction in equilibrium
-    double increment = 1;
-
-    /// The fraction to try next.
-    double
-    next() const
-    {
-      return std::min(1., done + increment);
-    }
-    void
-    accept(const double s)
-    {
-      done      = s;
-      increment = std::min(2 * increment, 1.);
-    }
-    /// Half the increment that failed (which may have been cut at the full
-    /// load: halving the nominal increment alone retried the same step).
-    void
-    reject(const double s)
-    {
-      increment = (s - done) / 2;
-    }
-  };
-
   /// "label 1 at (x, y, z) mm of the mesh": where a cell is (@p center in m).
   std::string
   cell_location_text(const dealii::types::material_id label,
                      const dealii::Point<3>          &center);
 
-  class ForwardProblem : public Discretization
+  class ForwardProblem : public Discretization, public NewtonSystem
   {
   public:
     /// Relative residual at which Newton stops (Solver/Newton tolerance).
@@ -119,7 +62,7 @@ namespace RestShape
                    const MaterialTable        &materials,
                    dealii::TimerOutput        &timer,
                    dealii::ConditionalOStream &pcout);
-    ~ForwardProblem();
+    ~ForwardProblem() override;
 
     /// Distribute DoFs, build constraints and the matrix; zero state.
     void
@@ -299,7 +242,7 @@ namespace RestShape
     const ContactConditions &
     contact_conditions() const
     {
-      return last_conditions;
+      return newton_solver.contact_conditions();
     }
 
     /**
@@ -345,15 +288,73 @@ namespace RestShape
      * the support reaction, at contact nodes minus the contact force (N).
      */
     const VectorType &
-    raw_residual() const;
+    raw_residual() const override;
     /// The residual of the last assembly with the Newton constraints
     /// condensed (external minus internal forces, N; zero at constrained
     /// DoFs, owned).
     const VectorType &
-    condensed_residual() const
+    condensed_residual() const override
     {
       return residual_condensed;
     }
+
+    // --- NewtonSystem (newton_system.h) ---------------------------------
+    VectorType &
+    unknowns() override
+    {
+      return d;
+    }
+    const VectorType &
+    ghosted_unknowns() const override
+    {
+      return d_ghost;
+    }
+    void
+    unknowns_changed() override
+    {
+      d_ghost = d;
+    }
+    const dealii::AffineConstraints<double> &
+    make_step_constraints() override;
+    void
+    set_tangent_type(const TangentType type) override
+    {
+      tangent_type = type;
+    }
+    bool
+    assemble_residual() override;
+    bool
+    assemble_step() override;
+    const VectorType &
+    external_forces() const override
+    {
+      return external_condensed;
+    }
+    double
+    energy() const override
+    {
+      return total_energy;
+    }
+    MatrixType &
+    step_matrix() override
+    {
+      return tangent;
+    }
+    const VectorType &
+    step_rhs() const override
+    {
+      return rhs_newton;
+    }
+    Assembled
+    assembled() const override;
+    void
+    restore(const Assembled &a) override;
+    double
+    resolution() const override;
+    std::string
+    inverted_cells_text() const override;
+    std::string
+    compression_text() const override;
 
   private:
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.
@@ -394,8 +395,6 @@ namespace RestShape
                         CopyData           &copy,
                         const bool          matrix) const;
     void
-    make_newton_constraints();
-    void
     compute_rigid_body_modes();
 
     /**
@@ -415,125 +414,6 @@ namespace RestShape
       CopyData                                                   &copy,
       const Assemble                                              what) const;
 
-    /// Newton for the current target load and rest shape: per step the
-    /// convergence check, the linear step, the line search, the tangent
-    /// for the next step (TangentStrategy).
-    bool
-    newton(SolveStatistics &stats);
-
-    /// Newton's state at the top of a step.
-    enum class NewtonState
-    {
-      converged,
-      failed, // stats.failure says why
-      iterate
-    };
-    /// Whether the state meets the tolerance (or has reached the round-off
-    /// floor) and, with contact, the contact conditions; releases adhesive
-    /// nodes and enforces the conditions (++@p corrections) on the way.
-    NewtonState
-    convergence_check(SolveStatistics &stats,
-                      const double     residual,
-                      const double     reference,
-                      const bool       set_changed,
-                      unsigned int    &corrections);
-
-    /// Solve the linear system of a Newton step into newton_update
-    /// (Inexact Newton: @p previous holds the last step's residual and
-    /// linear tolerance); returns the linear iterations.
-    unsigned int
-    linear_step(const double               residual,
-                const double               target,
-                std::pair<double, double> &previous,
-                SolveStatistics           &stats);
-
-    /// What the line search of a Newton step found.
-    struct LineSearchResult
-    {
-      double       alpha_max       = 1; // the longest step contact allows
-      double       alpha           = 1; // the step taken (if accepted)
-      double       trial_residual  = 0;
-      bool         accepted        = false;
-      unsigned int inverted_trials = 0;
-    };
-    /// Backtrack along newton_update (Armijo on the potential energy, or
-    /// on the residual norm); the state is restored when no step is
-    /// accepted.
-    LineSearchResult
-    line_search(const double residual,
-                const double reference,
-                const bool   set_changed);
-
-    /// The failed Newton attempts of a load-stepped solve: how many, and
-    /// those whose steps inverted cells (the smallest load fraction among
-    /// them, and one of the cells).
-    struct FailedAttempts
-    {
-      unsigned int count = 0, inverting = 0;
-      double       inverting_fraction = 0;
-      std::string  inverting_text;
-      void
-      add(const double fraction, const bool inverted, const std::string &text)
-      {
-        ++count;
-        if (!inverted || (inverting > 0 && fraction >= inverting_fraction))
-          {
-            inverting += inverted;
-            return;
-          }
-        ++inverting;
-        inverting_fraction = fraction;
-        inverting_text     = text;
-      }
-    };
-    /// Why solve() gives up: the physical cause where the attempts
-    /// inverted cells, the last failure otherwise, the load fraction
-    /// reached and the most compressed cell of its equilibrium.
-    std::string
-    give_up_text(const SolveStatistics &stats,
-                 const FailedAttempts  &failed,
-                 const unsigned int     halvings) const;
-    /// The progress line of Newton step @p it.
-    void
-    print_newton_step(const unsigned int      it,
-                      const double            relative_residual,
-                      const double            reference,
-                      const LineSearchResult &ls,
-                      const unsigned int      linear_iterations,
-                      const double            shift) const;
-    /// At a converged Newton state with contact: whether the contact
-    /// conditions hold against the obstacle (last_conditions); if not,
-    /// enforce them (false; Newton goes on, ++@p corrections) or, when that
-    /// cannot change anything, fail (false, stats.failure set).
-    /// @p reference: the external force norm of the solve.
-    bool
-    contact_conditions_hold(SolveStatistics &stats,
-                            const double     reference,
-                            unsigned int    &corrections);
-    /**
-     * The round-off level of the residual at the current state (N): the
-     * change of the residual when every free displacement moves by the
-     * smallest amount the state resolves (an ulp of d, or eps h_min, where
-     * F = I + grad d stops resolving it), less the tangent's linear response
-     * to that move. What remains is the noise of evaluating the residual,
-     * below which no Newton step can bring it. Needs the tangent of the
-     * current state; one residual assembly; the assembled vectors are kept.
-     */
-    double
-    measure_round_off();
-    /// Scale the tangent's diagonal by (1 + @p mu) (Solver/Tangent shift).
-    void
-    shift_diagonal(const double mu);
-    /// The relative tolerance of the linear solve of a Newton step with
-    /// residual norm @p residual (Solver/Inexact Newton), given the
-    /// previous step's residual and tolerance (0 at the first step) and
-    /// the residual norm @p target at which Newton stops.
-    double
-    linear_tolerance(const double residual,
-                     const double previous_residual,
-                     const double previous_eta,
-                     const double target) const;
-
     const MaterialTable        &material_table;
     dealii::TimerOutput        &timer;
     dealii::ConditionalOStream &pcout;
@@ -542,8 +422,7 @@ namespace RestShape
     dealii::AffineConstraints<double> constraints_newton; // + contact
 
     MatrixType tangent;
-    VectorType rhs_newton, residual_raw, residual_condensed, external_condensed,
-      newton_update;
+    VectorType rhs_newton, residual_raw, residual_condensed, external_condensed;
     VectorType d, d_ghost, w, w_ghost;
     // The assembly reads d and w from, and adds into, deal.II's distributed
     // vectors (locally relevant entries, element access by an index
@@ -561,14 +440,10 @@ namespace RestShape
       dealii::Point<3>           center;
       dealii::types::material_id label = 0;
     } inverted_cells;
-    /// "3 cells inverted, e.g. label 1 at (x, y, z) mm of the mesh".
-    std::string
-    inverted_cells_text() const;
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
     LoadState   current_load;
 
-    ContactConditions                      last_conditions;
     std::vector<std::unique_ptr<LoadTerm>> load_terms; // setup_load_terms()
     /// The built-in terms among them (the surface pressure's level and
     /// opening are set from outside).
@@ -578,6 +453,7 @@ namespace RestShape
 
     std::unique_ptr<LinearSolver> linear_solver;
     ActiveSetConstraints         *contact = nullptr;
+    NewtonSolver                  newton_solver;
   };
 } // namespace RestShape
 
