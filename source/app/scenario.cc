@@ -6,7 +6,9 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_reductions.h>
 #include <restshape/base/units.h>
+#include <restshape/base/vector_text.h>
 #include <restshape/postprocess/postprocessor.h>
+#include <restshape/postprocess/scenario_report.h>
 
 #include <cmath>
 #include <iomanip>
@@ -46,15 +48,6 @@ namespace RestShape
           R                     = Ra * R;
         }
       return R;
-    }
-
-    std::string
-    vector_text(const Tensor<1, 3> &v, const double scale = 1)
-    {
-      std::ostringstream out;
-      out << std::setprecision(4) << '(' << scale * v[0] + 0. << ", "
-          << scale * v[1] + 0. << ", " << scale * v[2] + 0. << ')';
-      return out.str();
     }
   } // namespace
 
@@ -262,7 +255,7 @@ namespace RestShape
           vector_text(changed.acceleration) + " m/s^2");
     if (p.has_fluid_level)
       add("fluid drained above " +
-          vector_text(p.fluid_level, 1. / parameters.mesh.length_unit) + " " +
+          vector_text(p.fluid_level, parameters.mesh.length_unit) + " " +
           parameters.mesh.length_unit_name);
     if (p.has_pressure)
       add("surface pressure " + number_text(scene.pressure) + " -> " +
@@ -278,12 +271,6 @@ namespace RestShape
       add("tissue body force " + vector_text(p.tissue_acceleration) +
           " m/s^2 (not buoyed)");
     return text.empty() ? "no change" : text;
-  }
-
-  std::string
-  Scenario::key(const std::string &what) const
-  {
-    return scenario.output_name() + "_" + what;
   }
 
   void
@@ -306,8 +293,10 @@ namespace RestShape
         opened_faces = forward.open_surface(opening);
         if (contact != nullptr)
           opened_nodes = contact->remove_contact(opening);
-        summary.set(key("craniotomy_freed_contact_nodes"), long(opened_nodes));
-        summary.set(key("craniotomy_pressure_faces"), long(opened_faces));
+        record_scenario_opening(summary,
+                                scenario.output_name(),
+                                opened_nodes,
+                                opened_faces);
       }
     ContactProblem::State start_set;
     if (contact != nullptr)
@@ -327,10 +316,7 @@ namespace RestShape
     // (its contact set and normals; the stress-free solve changes them).
     const SolveReductions r = compute_reductions(
       forward, contact, u1, forward.dof_handler().get_communicator());
-    summary.set(key("external_force_N"), r.external);
-    summary.set(key("support_reaction_N"), r.reaction);
-    summary.set(key("contact_force_N"), r.contact);
-    summary.set(key("elastic_support_force_N"), r.support);
+    record_scenario_forces(summary, scenario.output_name(), r);
     VectorType contact_fields;
     if (contact != nullptr)
       contact_fields =
@@ -355,10 +341,7 @@ namespace RestShape
     forward.set_state(d1, w_rest, changed);
     if (contact != nullptr)
       contact->set_state(end_set);
-    summary.set(key("newton_iterations_prestressed"),
-                long(s1.newton_iterations));
-    summary.set(key("newton_iterations_stress_free"),
-                long(s2.newton_iterations));
+    record_scenario_newton(summary, scenario.output_name(), s1, s2);
     report(u1, u2, contact_fields);
 
     // Back at the equilibrium, the skull closed, for the next scenario.
@@ -413,10 +396,10 @@ namespace RestShape
     });
     const auto [mean1, max1] = forward.nodal_norms(prestressed);
     const auto [mean2, max2] = forward.nodal_norms(stress_free);
-    summary.set(key("prestressed_mean_shift_mm"), mean1 * mm_per_m);
-    summary.set(key("prestressed_max_shift_mm"), max1 * mm_per_m);
-    summary.set(key("stress_free_mean_shift_mm"), mean2 * mm_per_m);
-    summary.set(key("stress_free_max_shift_mm"), max2 * mm_per_m);
+    record_scenario_shifts(summary,
+                           scenario.output_name(),
+                           {mean1, max1},
+                           {mean2, max2});
     const auto row = [&](const std::string &what, double x, double y) {
       std::ostringstream line;
       line << "  " << std::left << std::setw(24) << what.substr(0, 24)

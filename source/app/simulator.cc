@@ -13,6 +13,9 @@
 #include <restshape/forward/state_transfer.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
+#include <restshape/postprocess/inverse_report.h>
+#include <restshape/postprocess/run_report.h>
+#include <restshape/postprocess/stability_report.h>
 
 #include <cmath>
 #include <iomanip>
@@ -71,12 +74,8 @@ namespace RestShape
   {
     if (!output)
       return;
-    summary.set("converged", false);
-    if (!summary.has("failure"))
-      summary.set("failure", what);
-    summary.set("wall_seconds", wall_timer.wall_time());
-    summary.set("restshape_version", std::string(version()));
-    summary.set("git_revision", std::string(git_revision()));
+    record_run_failure(summary, what);
+    record_run_end(summary, wall_timer.wall_time());
     output->write_text("summary.json",
                        [&](std::ostream &out) { summary.write(out); });
   }
@@ -371,50 +370,11 @@ namespace RestShape
                        "cycle"},
                       iteration_rows);
 
-    summary.set("inverse_iterations", long(inverse_result.iterations));
-    summary.set("forward_solves", long(inverse_result.forward_solves));
-    summary.set("rejected_anderson_steps", long(inverse_result.rejected_steps));
-    if (parameters.inverse.method == InverseParameters::Method::direct)
-      {
-        summary.set("direct_inverse_converged",
-                    inverse_result.direct.converged);
-        summary.set("direct_inverse_newton_steps",
-                    long(inverse_result.direct.newton_steps));
-        summary.set("direct_inverse_jacobian_products",
-                    long(inverse_result.direct.jacobian_products));
-      }
-    if (const CarriedLoad &carried = inverse_result.carried; carried.share > 0)
-      {
-        summary.set("skull_load_share", carried.share);
-        summary.set("reference_skull_force_N", carried.reference_force.norm());
-        summary.set("reference_contact_nodes", long(carried.active_nodes));
-        summary.set("stated_skull_force_N", carried.stated_force.norm());
-      }
-    summary.set("mean_error_mm", inverse_result.mean_error * mm_per_m);
-    summary.set("max_error_mm", inverse_result.max_error * mm_per_m);
-    if (contact)
-      {
-        summary.set("mean_error_to_image_mm",
-                    inverse_result.mean_image_error * mm_per_m);
-        summary.set("max_error_to_image_mm",
-                    inverse_result.max_image_error * mm_per_m);
-        summary.set("unreachable_target_nodes",
-                    long(inverse_result.unreachable_nodes));
-        summary.set("unreachable_target_max_mm",
-                    inverse_result.unreachable_max * mm_per_m);
-        summary.set("unreachable_target_mean_mm",
-                    inverse_result.unreachable_mean * mm_per_m);
-        // Only where the projection inverted cells (TargetRelaxation).
-        const TargetRelaxationResult &relaxed = inverse_result.relaxation;
-        if (relaxed.inverted_before > 0)
-          {
-            summary.set("target_cells_inverted_by_projection",
-                        long(relaxed.inverted_before));
-            summary.set("target_relaxed_nodes", long(relaxed.moved_nodes));
-            summary.set("target_relaxation_max_mm",
-                        relaxed.largest_change * mm_per_m);
-          }
-      }
+    record_inverse_result(summary,
+                          inverse_result,
+                          parameters.inverse.method ==
+                            InverseParameters::Method::direct,
+                          contact != nullptr);
 
     SolveStatistics stats;
     stats.converged         = inverse_result.converged;
@@ -507,15 +467,11 @@ namespace RestShape
         // Inner solves of an indefinite tangent may fail with CG + AMG.
         const std::string reason =
           std::string("its linear solves failed: ") + e.what();
-        summary.set("stability_checked", false);
-        summary.set("stability_not_checked", reason);
+        record_stability_not_checked(summary, reason);
         pcout << "  Stability: not determined (" << reason << ")" << std::endl;
         return "";
       }
-    summary.set("stability_checked", true);
-    summary.set("stable", s.stable());
-    summary.set("negative_eigenvalues", long(s.negative_eigenvalues));
-    summary.set("smallest_eigenvalue_per_s2", s.smallest_eigenvalue);
+    record_stability(summary, s);
     pcout << "  Stability: " << s.text()
           << (s.exact_solves ? "" : " (" + s.variant_text() + ")") << std::endl;
     return s.stable() ? std::string() : s.text();
@@ -527,8 +483,7 @@ namespace RestShape
     const std::string skip = stability_not_checked_because();
     if (!skip.empty())
       {
-        summary.set("stability_checked", false);
-        summary.set("stability_not_checked", skip);
+        record_stability_not_checked(summary, skip);
         pcout << "  Stability: not checked (" << skip << ")" << std::endl;
         return;
       }

@@ -5,12 +5,12 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
-#include <restshape/base/version.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
+#include <restshape/postprocess/run_report.h>
 
 #include <iomanip>
 
@@ -63,14 +63,8 @@ namespace RestShape
   Simulator::write_summary(const SolveStatistics &stats)
   {
     if (!stats.converged)
-      {
-        summary.set("converged", false);
-        summary.set("failure", stats.failure);
-        summary.set("newton_iterations", long(stats.newton_iterations));
-      }
-    summary.set("wall_seconds", wall_timer.wall_time());
-    summary.set("restshape_version", std::string(version()));
-    summary.set("git_revision", std::string(git_revision()));
+      record_solve_failure(summary, stats);
+    record_run_end(summary, wall_timer.wall_time());
     output->write_text("summary.json",
                        [&](std::ostream &out) { summary.write(out); });
   }

@@ -5,6 +5,7 @@
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/region.h>
+#include <restshape/base/vector_text.h>
 
 #include <cmath>
 #include <iomanip>
@@ -54,23 +55,16 @@ namespace RestShape
   std::string
   Region::text(const double unit, const std::string &unit_name) const
   {
-    std::ostringstream out;
-    out << std::setprecision(4);
-    const auto point = [&](const Tensor<1, 3> &v, const double s) {
-      out << '(' << v[0] / s + 0. << ", " << v[1] / s + 0. << ", "
-          << v[2] / s + 0. << ')';
-    };
     if (shape == Shape::none)
       return "none";
     if (shape == Shape::surface)
       return "inside of the surface " + file;
-    out << (shape == Shape::sphere ? "sphere at " : "cylinder through ");
-    point(center, unit);
+    std::ostringstream out;
+    out << std::setprecision(4)
+        << (shape == Shape::sphere ? "sphere at " : "cylinder through ")
+        << vector_text(center, unit);
     if (shape == Shape::cylinder)
-      {
-        out << " along ";
-        point(axis, 1.);
-      }
+      out << " along " << vector_text(axis);
     out << " of radius " << radius / unit << ' ' << unit_name;
     return out.str();
   }

@@ -91,9 +91,6 @@ namespace RestShape
     report(const VectorType &prestressed,
            const VectorType &stress_free,
            const VectorType &contact_fields);
-    /// The summary key "scenario_WHAT" (or "scenario_NAME_WHAT").
-    std::string
-    key(const std::string &what) const;
     /// One line that says what the scenario changes.
     std::string
     description(const LoadState &scene, const LoadState &changed) const;
