@@ -232,12 +232,12 @@ namespace RestShape
         new_history();
         pcout << "      active nodes pull on the obstacle: released"
               << contact->progress_text() << std::endl;
-        return State::iterate;
+        return State::released;
       }
     if (contact_conditions_hold(stats, reference, corrections))
       return State::converged;
     new_history();
-    return stats.failure.empty() ? State::iterate : State::failed;
+    return stats.failure.empty() ? State::released : State::failed;
   }
 
   unsigned int
@@ -470,10 +470,14 @@ namespace RestShape
 
         const State state = convergence_check(
           stats, residual, reference, set_changed, corrections);
-        if (state != State::iterate)
+        if (state == State::converged || state == State::failed)
           return state == State::converged;
         if (it > max_steps)
           break;
+        // Released contact constraints: the next step needs the new ones (a
+        // step with those of this state would solve for nothing).
+        if (state == State::released)
+          continue;
         // A Newton that cannot reach the tolerance in the steps it has left
         // gives the load step back now (to be halved), not after them all.
         const std::string stagnates = stagnation(stats.residual_history,

@@ -132,11 +132,15 @@ namespace RestShape
     {
       converged,
       failed, // stats.failure says why
-      iterate
+      iterate,
+      /// Converged, but contact constraints were released (adhesive nodes,
+      /// violated conditions): Newton goes on with the new constraints.
+      released
     };
     /// Whether the state meets the tolerance (or has reached the round-off
     /// floor) and, with contact, the contact conditions; releases adhesive
-    /// nodes and enforces the conditions (++@p corrections) on the way.
+    /// nodes and enforces the conditions (++@p corrections) on the way
+    /// (then `released`).
     State
     convergence_check(SolveStatistics &stats,
                       const double     residual,
