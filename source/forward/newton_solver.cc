@@ -435,6 +435,10 @@ namespace RestShape
     // Rounds of enforce_conditions() after converged states that violated
     // the contact conditions.
     unsigned int corrections = 0;
+    // The steps that solved a linear system, as numbered on screen (a
+    // release round between two of them takes a pass of the loop, not a
+    // step).
+    unsigned int step = 0;
     for (unsigned int it = 1; it <= max_steps + 1; ++it)
       {
         bool set_changed = false;
@@ -496,8 +500,12 @@ namespace RestShape
         const double           shift = strategy.shift();
         const LineSearchResult ls =
           line_search(residual, reference, set_changed);
-        print_step(
-          it, residual / reference, reference, ls, linear_iterations, shift);
+        print_step(++step,
+                   residual / reference,
+                   reference,
+                   ls,
+                   linear_iterations,
+                   shift);
         if (!ls.accepted)
           {
             if (retry_rejected_step(strategy, ls, residual, reference, stats))
