@@ -1,23 +1,13 @@
 // NewtonSolver: load stepping. Newton from the last equilibrium to the next
 // load fraction; a failed increment is halved, an accepted one doubled.
 
+#include <restshape/base/format_text.h>
 #include <restshape/forward/newton_solver.h>
 
 #include <cstdio>
 
 namespace RestShape
 {
-  namespace
-  {
-    std::string
-    format(const char *fmt, double a, double b = 0)
-    {
-      char buffer[256];
-      std::snprintf(buffer, sizeof(buffer), fmt, a, b);
-      return buffer;
-    }
-  } // namespace
-
   void
   NewtonSolver::FailedAttempts::add(const double       fraction,
                                     const bool         inverted,
@@ -43,18 +33,19 @@ namespace RestShape
     // is, then what failed beyond it: steps that inverted cells (with one
     // of them), and the last failure.
     std::string text =
-      format("gave up at %.4f of the full load "
-             "(its equilibrium compresses cells to ",
-             stats.fraction) +
+      format_text("gave up at %.4f of the full load "
+                  "(its equilibrium compresses cells to ",
+                  stats.fraction) +
       system.compression_text() + ") after " + std::to_string(halvings - 1) +
       " halvings of the load increment: " + std::to_string(failed.count) +
       " failed attempts";
     if (failed.inverting > 0)
-      text += ", " + std::to_string(failed.inverting) +
-              format(" of them because Newton's steps inverted cells (towards "
-                     "%.4g of the load: ",
-                     failed.inverting_fraction) +
-              failed.inverting_text + ")";
+      text +=
+        ", " + std::to_string(failed.inverting) +
+        format_text(" of them because Newton's steps inverted cells (towards "
+                    "%.4g of the load: ",
+                    failed.inverting_fraction) +
+        failed.inverting_text + ")";
     text += "; the last one: " + stats.failure;
     // Measured on the stability matrix (doc/benchmarks.md, section 4):
     // every P1 case converged with the shift. Not where the last increment
@@ -84,7 +75,7 @@ namespace RestShape
         const double s = steps.next();
         set_fraction(s);
         if (s < 1 || steps.increment < 1)
-          pcout << "    Load step to " << format("%.4f", s) << std::endl;
+          pcout << "    Load step to " << format_text("%.4f", s) << std::endl;
 
         if (solve(stats))
           {

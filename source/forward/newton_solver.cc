@@ -1,6 +1,7 @@
 // NewtonSolver: Newton's method with line search (and inexact linear
 // tolerances) for a NewtonSystem, with an optional active set (contact).
 
+#include <restshape/base/format_text.h>
 #include <restshape/forward/newton_progress.h>
 #include <restshape/forward/newton_solver.h>
 
@@ -15,14 +16,6 @@ namespace RestShape
 
   namespace
   {
-    std::string
-    format(const char *fmt, double a, double b = 0, double c = 0)
-    {
-      char buffer[256];
-      std::snprintf(buffer, sizeof(buffer), fmt, a, b, c);
-      return buffer;
-    }
-
     /// A stalled residual within this factor of the measured round-off
     /// level is at that level (seen: a plateau at 2.5e-10 against a
     /// measured 2.8e-10, P1 cantilever refined twice).
@@ -188,11 +181,12 @@ namespace RestShape
     const double tol = parameters.newton_tolerance;
     if (!std::isfinite(residual) || !std::isfinite(reference))
       {
-        stats.failure = format("the residual is not a finite number (|R| = "
-                               "%g N, |f| = %g N): the loads or the material "
-                               "values overflow double precision",
-                               residual,
-                               reference);
+        stats.failure =
+          format_text("the residual is not a finite number (|R| = "
+                      "%g N, |f| = %g N): the loads or the material "
+                      "values overflow double precision",
+                      residual,
+                      reference);
         return State::failed;
       }
     // Above the tolerance, a stalled Newton counts as converged only where
@@ -212,13 +206,13 @@ namespace RestShape
       return State::iterate;
     stats.at_round_off = floor;
     if (floor)
-      pcout << format("      Newton: |R|/|f| = %.2e is at the round-off "
-                      "level of this state (measured: %.2e, the noise of "
-                      "evaluating the residual); tolerance %.0e not met, "
-                      "converged at the round-off level",
-                      residual / reference,
-                      stats.round_off,
-                      tol)
+      pcout << format_text("      Newton: |R|/|f| = %.2e is at the round-off "
+                           "level of this state (measured: %.2e, the noise of "
+                           "evaluating the residual); tolerance %.0e not met, "
+                           "converged at the round-off level",
+                           residual / reference,
+                           stats.round_off,
+                           tol)
             << std::endl;
     if (contact == nullptr)
       return State::converged;
@@ -338,11 +332,11 @@ namespace RestShape
                            const double            shift) const
   {
     pcout << "      Newton " << std::setw(2) << it
-          << format(": |R|/|f| %9.3e -> %9.3e, step %5.3f",
-                    relative_residual,
-                    ls.accepted ? ls.trial_residual / reference :
-                                  relative_residual,
-                    ls.alpha)
+          << format_text(": |R|/|f| %9.3e -> %9.3e, step %5.3f",
+                         relative_residual,
+                         ls.accepted ? ls.trial_residual / reference :
+                                       relative_residual,
+                         ls.alpha)
           << (ls.inverted_trials > 0 ?
                 " (" + std::to_string(ls.inverted_trials) +
                   " shorter: a cell inverted)" :
@@ -352,7 +346,7 @@ namespace RestShape
                   std::to_string(linear_iterations) + " its" :
                 std::string())
           << (contact != nullptr ? contact->progress_text() : std::string())
-          << (shift > 0 ? format(", shift %.0e", shift) : std::string())
+          << (shift > 0 ? format_text(", shift %.0e", shift) : std::string())
           << std::endl;
   }
 
@@ -360,11 +354,11 @@ namespace RestShape
   NewtonSolver::shift_failure(const double relative_residual,
                               const bool   inverted) const
   {
-    return format("Newton stalls at |R|/|f| = %.3e: its steps stay "
-                  "short even with the tangent's diagonal scaled by "
-                  "1 + %.0e (the largest shift tried)",
-                  relative_residual,
-                  TangentStrategy::max_shift) +
+    return format_text("Newton stalls at |R|/|f| = %.3e: its steps stay "
+                       "short even with the tangent's diagonal scaled by "
+                       "1 + %.0e (the largest shift tried)",
+                       relative_residual,
+                       TangentStrategy::max_shift) +
            (inverted ?
               "; the last shortened step: " + system.inverted_cells_text() :
               std::string());
@@ -398,15 +392,15 @@ namespace RestShape
         case TangentStrategy::Retry::none:
           break;
       }
-    stats.failure        = format("the line search could not reduce the "
-                                  "residual (|R|/|f| = %.3e)",
-                           residual / reference);
+    stats.failure        = format_text("the line search could not reduce the "
+                                       "residual (|R|/|f| = %.3e)",
+                                residual / reference);
     stats.cells_inverted = ls.inverted_trials > 0;
     if (stats.cells_inverted)
-      stats.failure += format("; %.0f of its %.0f trial steps inverted "
-                              "cells, the shortest of them ",
-                              ls.inverted_trials,
-                              line_search_trials) +
+      stats.failure += format_text("; %.0f of its %.0f trial steps inverted "
+                                   "cells, the shortest of them ",
+                                   ls.inverted_trials,
+                                   line_search_trials) +
                        system.inverted_cells_text();
     return false;
   }
@@ -524,9 +518,9 @@ namespace RestShape
       }
     stats.failure =
       "no convergence in " + std::to_string(max_steps) +
-      format(" Newton iterations (|R|/|f| = %.3e, tolerance %.1e)",
-             stats.residual / stats.reference,
-             tol);
+      format_text(" Newton iterations (|R|/|f| = %.3e, tolerance %.1e)",
+                  stats.residual / stats.reference,
+                  tol);
     if (contact != nullptr && stats.residual <= tol * stats.reference)
       stats.failure +=
         ": the residual meets the tolerance but " + contact->unsettled_text();
