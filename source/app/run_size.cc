@@ -26,7 +26,7 @@ namespace RestShape
     double
     dofs_per_cell(const Parameters &parameters)
     {
-      const bool linear = parameters.discretization.degree == 1;
+      const bool linear = parameters.forward.discretization.degree == 1;
       if (parameters.mesh.cell_type == CellType::tetrahedra)
         return 3 * (linear ? 0.2 : 1.47);
       return 3 * (linear ? 1.1 : 8.0);

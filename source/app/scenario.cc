@@ -124,11 +124,12 @@ namespace RestShape
                     const MPI_Comm            comm)
   {
     LoadState scene;
-    scene.acceleration = parameters.loads.gravity;
+    scene.acceleration = parameters.forward.loads.gravity;
     const LoadState changed =
-      changed_load(p, parameters.loads, scene, [&](const Tensor<1, 3> &) {
-        return p.fluid_level;
-      });
+      changed_load(p,
+                   parameters.forward.loads,
+                   scene,
+                   [&](const Tensor<1, 3> &) { return p.fluid_level; });
     const Tensor<1, 3> g = changed.acceleration;
     if (g.norm() == 0)
       throw InputError("",
@@ -281,7 +282,7 @@ namespace RestShape
     const VectorType w_rest  = forward.owned_copy(forward.rest_displacement());
     const LoadState  scene   = forward.load();
     const LoadState  changed = changed_load(
-      scenario, parameters.loads, scene, [this](const Tensor<1, 3> &a) {
+      scenario, parameters.forward.loads, scene, [this](const Tensor<1, 3> &a) {
         return forward.highest_pressure_point(a);
       });
     ContactProblem::State equilibrium_set;
@@ -314,8 +315,12 @@ namespace RestShape
     u1 -= d_eq;
     // What carries the changed load, at the pre-stressed model's end state
     // (its contact set and normals; the stress-free solve changes them).
-    const SolveReductions r = compute_reductions(
-      forward, contact, u1, forward.dof_handler().get_communicator());
+    const SolveReductions r =
+      compute_reductions(forward,
+                         contact,
+                         u1,
+                         parameters.inverse.enabled,
+                         forward.dof_handler().get_communicator());
     record_scenario_forces(summary, scenario.output_name(), r);
     VectorType contact_fields;
     if (contact != nullptr)

@@ -1,9 +1,10 @@
 // The parameters of subsection Scenario.
 #include <deal.II/base/utilities.h>
 
+#include <restshape/app/scenario_parameters.h>
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
-#include <restshape/base/parameters.h>
+#include <restshape/base/parameter_parsing.h>
 #include <restshape/contact/obstacle.h>
 
 #include <cmath>

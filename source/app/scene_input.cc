@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 
+#include <restshape/app/parameters.h>
 #include <restshape/app/scene_input.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
-#include <restshape/base/parameters.h>
 
 #include <algorithm>
 #include <cctype>

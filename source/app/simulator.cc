@@ -86,7 +86,7 @@ namespace RestShape
     make_mesh();
     check_scene_on_mesh();
     forward = std::make_unique<ForwardProblem>(
-      parameters, *mesh, *materials, timer, pcout);
+      parameters.forward, *mesh, *materials, timer, pcout);
     if (parameters.contact.enabled())
       {
         contact =
@@ -137,8 +137,8 @@ namespace RestShape
       parameters.mesh, comm, [&](const std::size_t cells) {
         check_run_size(cells, parameters, prm_file, root);
       });
-    materials =
-      std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
+    materials = std::make_unique<MaterialTable>(parameters.forward.materials,
+                                                mesh->labels());
     if (!parameters.verification.exact_displacement.empty())
       exact = std::make_unique<ExactDisplacement>(
         parameters.verification.exact_displacement,
@@ -444,7 +444,7 @@ namespace RestShape
   std::string
   Simulator::stability_not_checked_because() const
   {
-    if (parameters.solver.check_stability == StabilityCheck::off)
+    if (parameters.forward.solver.check_stability == StabilityCheck::off)
       return "Solver/Check stability = false";
     if (!forward->tangent_is_symmetric())
       return "the follower pressure acts on a surface with free edges: its "

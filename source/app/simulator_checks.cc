@@ -57,7 +57,7 @@ namespace RestShape
   void
   Simulator::check_scene_on_problem() const
   {
-    if (parameters.solver.check_stability == StabilityCheck::on &&
+    if (parameters.forward.solver.check_stability == StabilityCheck::on &&
         !forward->tangent_is_symmetric())
       throw InputError(
         prm_file,
@@ -66,7 +66,7 @@ namespace RestShape
         "not conservative (its tangent is not symmetric): stability is "
         "then not a question of the energy; expected Check stability = "
         "false, or pressure faces that are closed or held at their edges");
-    if (contact || parameters.boundary.support_stiffness > 0)
+    if (contact || parameters.forward.boundary.support_stiffness > 0)
       return;
     // A piece that neither a fixed label nor a joint to a held piece holds
     // floats: its rigid motion makes the problem singular.
@@ -146,7 +146,7 @@ namespace RestShape
   Simulator::held_labels() const
   {
     std::set<Label> held;
-    for (const auto &fixed : parameters.boundary.fixed_labels)
+    for (const auto &fixed : parameters.forward.boundary.fixed_labels)
       held.insert(fixed.label);
     return held;
   }
@@ -154,7 +154,7 @@ namespace RestShape
   std::string
   Simulator::unheld_pieces_text() const
   {
-    if (!mesh || contact || parameters.boundary.support_stiffness > 0)
+    if (!mesh || contact || parameters.forward.boundary.support_stiffness > 0)
       return "";
     std::string text;
     for (const UnheldPiece &piece : mesh->unheld_pieces(held_labels()))

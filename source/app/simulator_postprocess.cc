@@ -24,8 +24,8 @@ namespace RestShape
     // Nodal displacement from the rest shape.
     VectorType u = forward->owned_copy(forward->displacement());
     u -= forward->owned_copy(forward->rest_displacement());
-    const SolveReductions reductions =
-      compute_reductions(*forward, contact.get(), u, comm);
+    const SolveReductions reductions = compute_reductions(
+      *forward, contact.get(), u, parameters.inverse.enabled, comm);
     {
       TimerOutput::Scope scope(timer, "Error estimate");
       estimate = estimate_error(*forward, u, parameters.refinement.estimator);

@@ -7,6 +7,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <fcntl.h>
+#include <restshape/app/parameters.h>
 #include <restshape/app/scene_input.h>
 #include <restshape/app/study.h>
 #include <restshape/app/study_compare.h>
@@ -14,7 +15,6 @@
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
-#include <restshape/base/parameters.h>
 #include <restshape/forward/registered_parameters.h>
 #include <spawn.h>
 #include <sys/resource.h>

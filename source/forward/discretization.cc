@@ -30,8 +30,8 @@ namespace RestShape
     }
   } // namespace
 
-  Discretization::Discretization(const Parameters &parameters,
-                                 LabelledMesh     &mesh)
+  Discretization::Discretization(const ForwardParameters &parameters,
+                                 LabelledMesh            &mesh)
     : parameters(parameters)
     , labelled_mesh(mesh)
     , comm(mesh.triangulation().get_communicator())

@@ -21,11 +21,11 @@ namespace RestShape
 
   // ------------------------------------------------------------------
 
-  ForwardProblem::ForwardProblem(const Parameters    &parameters,
-                                 LabelledMesh        &mesh,
-                                 const MaterialTable &materials,
-                                 TimerOutput         &timer,
-                                 ConditionalOStream  &pcout)
+  ForwardProblem::ForwardProblem(const ForwardParameters &parameters,
+                                 LabelledMesh            &mesh,
+                                 const MaterialTable     &materials,
+                                 TimerOutput             &timer,
+                                 ConditionalOStream      &pcout)
     : Discretization(parameters, mesh)
     , material_table(materials)
     , timer(timer)

@@ -24,7 +24,7 @@ namespace RestShape
   LoadScales
   compute_load_scales(const ForwardProblem &forward)
   {
-    const Parameters  &prm  = forward.scene_parameters();
+    const ForwardParameters &prm = forward.scene_parameters();
     const MPI_Comm     comm = forward.mesh().triangulation().get_communicator();
     const Tensor<1, 3> gravity = prm.loads.gravity;
     const Tensor<1, 3> down =

@@ -3,7 +3,8 @@
 
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
-#include <restshape/base/parameters.h>
+#include <restshape/base/parameter_parsing.h>
+#include <restshape/forward/material_parameters.h>
 
 #include <cmath>
 #include <cstdlib>

@@ -22,7 +22,7 @@ namespace RestShape
 
   void
   parse_registered_parameters(dealii::ParameterHandler &prm,
-                              Parameters               &parameters)
+                              ForwardParameters        &parameters)
   {
     parse_material_law_parameters(prm, parameters.materials);
     parameters.load_terms = parse_load_terms(prm);

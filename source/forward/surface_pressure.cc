@@ -16,8 +16,7 @@ namespace RestShape
     , labels(
         context.labels_or_unfixed(context.parameters.loads.pressure_labels))
   {
-    const Parameters     &parameters = context.parameters;
-    const LoadParameters &loads      = parameters.loads;
+    const LoadParameters &loads = context.parameters.loads;
     FEFaceValues<3>       fv(context.mapping,
                        context.fe,
                        context.face_quadrature,
@@ -37,8 +36,7 @@ namespace RestShape
     // (A scenario may set a pressure where the scene has none.)
     bool pressure_acts =
       loads.pressure != 0 || (loads.hydrostatic && loads.gravity.norm() > 0);
-    for (const ScenarioParameters &scenario : parameters.scenarios)
-      pressure_acts |= scenario.has_pressure && scenario.pressure != 0;
+    pressure_acts |= context.parameters.pressure_set_later;
     is_symmetric    = !(loads.follower && pressure_acts) || closed_or_held();
     scene_symmetric = is_symmetric;
   }
@@ -58,7 +56,7 @@ namespace RestShape
         "Loads/Fluid level",
         "no pressure face lies below the fluid level (the lowest face "
         "point is " +
-          number_text(-deepest / context.parameters.mesh.length_unit) +
+          number_text(-deepest / context.mesh.length_unit()) +
           " mesh units above it): the fluid wets nothing; expected a "
           "level above some of the pressure faces");
   }

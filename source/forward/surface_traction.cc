@@ -73,7 +73,7 @@ namespace RestShape
     , region(settings.region)
     , context(context)
   {
-    region.scale(context.parameters.mesh.length_unit);
+    region.scale(context.mesh.length_unit());
     unsigned int    faces = 0;
     FEFaceValues<3> fv(context.mapping,
                        context.fe,

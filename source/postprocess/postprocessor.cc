@@ -17,6 +17,7 @@ namespace RestShape
   compute_reductions(const ForwardProblem &forward,
                      const ContactProblem *contact,
                      const VectorType     &u,
+                     const bool            by_label,
                      const MPI_Comm        comm)
   {
     SolveReductions r;
@@ -33,8 +34,7 @@ namespace RestShape
     if (contact)
       {
         r.adhesion = contact->adhesion(forward.raw_residual());
-        // Reported at the target only (SummaryPostprocessor, ScreenReport).
-        if (forward.scene_parameters().inverse.enabled)
+        if (by_label)
           r.contact_by_label = contact->force_by_label(forward.raw_residual());
         r.fixed_planes = contact->fixed_plane_nodes();
       }

@@ -2,7 +2,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
-#include <restshape/base/parameters.h>
+#include <restshape/base/parameter_parsing.h>
+#include <restshape/postprocess/refinement_parameters.h>
 
 #include <cmath>
 

@@ -63,7 +63,7 @@ namespace RestShape
     const std::string kind =
       in.forward.surface_load().follower() ? "follower" : "dead";
     // surface_force() sums the pressure and the registry's load terms.
-    if (!in.parameters.load_terms.empty())
+    if (!in.parameters.forward.load_terms.empty())
       in.pcout << "  Surface loads: resultant " << r.surface << " N ("
                << (pressure ? "the " + kind + " pressure and " : "")
                << "the load terms of the scene, e.g. Surface traction)"
@@ -71,7 +71,7 @@ namespace RestShape
     else if (pressure)
       in.pcout << "  Surface pressure: resultant " << r.surface << " N ("
                << kind << " load)" << std::endl;
-    if (in.parameters.boundary.support_stiffness > 0)
+    if (in.parameters.forward.boundary.support_stiffness > 0)
       in.pcout << "  Elastic support: force " << r.support << " N" << std::endl;
     if (in.contact)
       report_contact(in);

@@ -86,8 +86,8 @@ namespace RestShape
     summary.set("converged", true);
     summary.set("cell_type",
                 std::string(in.mesh.is_simplex() ? "tetrahedra" : "hexahedra"));
-    summary.set("polynomial_degree", long(p.discretization.degree));
-    summary.set("tangent", p.discretization.tangent_name);
+    summary.set("polynomial_degree", long(p.forward.discretization.degree));
+    summary.set("tangent", p.forward.discretization.tangent_name);
     summary.set("n_cells",
                 long(in.mesh.triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(r.n_nodes));
@@ -116,7 +116,7 @@ namespace RestShape
     summary.set("support_reaction_N", r.reaction);
     summary.set("force_balance_relative",
                 r.imbalance() / std::max(r.external.norm(), 1e-300));
-    if (p.boundary.support_stiffness > 0)
+    if (p.forward.boundary.support_stiffness > 0)
       summary.set("elastic_support_force_N", r.support);
     if (in.contact)
       set_contact(in);

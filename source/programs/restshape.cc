@@ -11,6 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <restshape/app/parameters.h>
 #include <restshape/app/scene_input.h>
 #include <restshape/app/simulator.h>
 #include <restshape/app/study.h>
@@ -18,7 +19,6 @@
 #include <restshape/base/interruption.h>
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
-#include <restshape/base/parameters.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/registered_parameters.h>
@@ -211,7 +211,7 @@ main(int argc, char **argv)
                                       registered_label_entries());
       Parameters parameters;
       parameters.parse_parameters(prm, scenarios, registered_label_entries());
-      parse_registered_parameters(prm, parameters);
+      parse_registered_parameters(prm, parameters.forward);
       // Destroy the simulator (and its TimerOutput, which prints a banner
       // when destroyed during stack unwinding) before reporting an error.
       std::exception_ptr error;

@@ -11,10 +11,10 @@
 // throws InputError; anything else (another exception, a crash, a
 // sanitizer report, a hang) is a finding. The input is written to a file
 // with the reader's extension, because every reader takes a path.
+#include <restshape/app/parameters.h>
 #include <restshape/app/scene_input.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/label_values.h>
-#include <restshape/base/parameters.h>
 #include <restshape/mesh/mesh_formats.h>
 
 #ifdef RESTSHAPE_FUZZ_OBSTACLE

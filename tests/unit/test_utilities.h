@@ -7,7 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/material.h>
@@ -139,10 +139,10 @@ namespace RestShape::Test
               dealii::TimerOutput::wall_times)
     {
       mesh = std::make_unique<LabelledMesh>(parameters.mesh, MPI_COMM_WORLD);
-      materials =
-        std::make_unique<MaterialTable>(parameters.materials, mesh->labels());
-      forward = std::make_unique<ForwardProblem>(
-        parameters, *mesh, *materials, timer, pcout);
+      materials = std::make_unique<MaterialTable>(parameters.forward.materials,
+                                                  mesh->labels());
+      forward   = std::make_unique<ForwardProblem>(
+        parameters.forward, *mesh, *materials, timer, pcout);
       forward->setup();
     }
 

@@ -2,7 +2,7 @@
 #ifndef restshape_app_run_size_h
 #define restshape_app_run_size_h
 
-#include <restshape/base/parameters.h>
+#include <restshape/app/parameters.h>
 
 #include <cstddef>
 #include <string>

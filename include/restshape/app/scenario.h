@@ -5,7 +5,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/io/output.h>

@@ -9,7 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/material.h>

@@ -6,7 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/contact/contact_parameters.h>
 #include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
 #include <restshape/forward/active_set_constraints.h>

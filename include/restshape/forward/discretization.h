@@ -13,7 +13,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/mesh/labelled_mesh.h>
 
@@ -35,7 +35,7 @@ namespace RestShape
   public:
     /// The element and quadrature of Discretization/Polynomial degree on
     /// @p mesh; setup_dofs() distributes the DoFs.
-    Discretization(const Parameters &parameters, LabelledMesh &mesh);
+    Discretization(const ForwardParameters &parameters, LabelledMesh &mesh);
     ~Discretization();
 
     /// Distribute DoFs, find the nodes, build the hanging-node and
@@ -113,9 +113,9 @@ namespace RestShape
                       const VectorType          &w);
 
   protected:
-    const Parameters &parameters;
-    LabelledMesh     &labelled_mesh;
-    const MPI_Comm    comm;
+    const ForwardParameters &parameters;
+    LabelledMesh            &labelled_mesh;
+    const MPI_Comm           comm;
 
     std::unique_ptr<dealii::Mapping<3>> mapping_;
     dealii::FESystem<3>                 fe_;

@@ -19,10 +19,10 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <restshape/base/parameters.h>
 #include <restshape/forward/active_set_constraints.h>
 #include <restshape/forward/contact_conditions.h>
 #include <restshape/forward/discretization.h>
+#include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/load_term.h>
@@ -57,7 +57,7 @@ namespace RestShape
       return parameters.solver.newton_tolerance;
     }
 
-    ForwardProblem(const Parameters           &parameters,
+    ForwardProblem(const ForwardParameters    &parameters,
                    LabelledMesh               &mesh,
                    const MaterialTable        &materials,
                    dealii::TimerOutput        &timer,
@@ -133,8 +133,8 @@ namespace RestShape
                         unsigned int     &n_bad,
                         std::string      *where = nullptr) const;
 
-    /// The scene's parameters.
-    const Parameters &
+    /// The scene's parameters of the forward problem.
+    const ForwardParameters &
     scene_parameters() const
     {
       return parameters;
@@ -373,7 +373,7 @@ namespace RestShape
 
     /// The load terms: the body force, the surface pressure, the elastic
     /// support, and those the scene enables from the registry
-    /// (Parameters::load_terms). Throws InputError if the fluid wets no
+    /// (ForwardParameters::load_terms). Throws InputError if the fluid wets no
     /// pressure face.
     void
     setup_load_terms();

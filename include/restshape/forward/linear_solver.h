@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/solver_parameters.h>
 
 #include <memory>
 #include <string>

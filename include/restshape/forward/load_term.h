@@ -14,7 +14,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/material.h>
@@ -33,7 +33,7 @@ namespace RestShape
   /// What a load term is built on: the scene and its discretisation.
   struct LoadContext
   {
-    const Parameters            &parameters;
+    const ForwardParameters     &parameters;
     const LabelledMesh          &mesh;
     const MaterialTable         &materials;
     const dealii::Mapping<3>    &mapping;

@@ -6,7 +6,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/base/parameter_parsing.h>
+#include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/load_term.h>
 
 #include <memory>

@@ -6,9 +6,9 @@
 #include <deal.II/base/tensor.h>
 
 #include <restshape/base/label_values.h>
-#include <restshape/base/parameters.h>
 #include <restshape/forward/corotational_law.h>
 #include <restshape/forward/material_law.h>
+#include <restshape/forward/material_parameters.h>
 
 #include <map>
 #include <memory>

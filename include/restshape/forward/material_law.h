@@ -4,7 +4,7 @@
 
 #include <deal.II/base/tensor.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/discretization_parameters.h>
 
 #include <functional>
 #include <map>

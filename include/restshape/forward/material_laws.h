@@ -4,7 +4,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <restshape/base/parameter_parsing.h>
 #include <restshape/forward/material_law.h>
+#include <restshape/forward/material_parameters.h>
 
 #include <memory>
 #include <string>

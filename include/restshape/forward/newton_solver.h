@@ -8,11 +8,12 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/base/parameters.h>
 #include <restshape/forward/active_set_constraints.h>
 #include <restshape/forward/contact_conditions.h>
+#include <restshape/forward/discretization_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/newton_system.h>
+#include <restshape/forward/solver_parameters.h>
 #include <restshape/forward/tangent_strategy.h>
 
 #include <algorithm>

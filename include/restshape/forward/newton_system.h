@@ -6,7 +6,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/discretization_parameters.h>
 #include <restshape/forward/linear_solver.h>
 
 #include <string>

@@ -1,11 +1,13 @@
 // The parameters that the registered material laws (material_laws.h) and
-// load terms (load_terms.h) declare themselves, beside those of Parameters.
+// load terms (load_terms.h) declare themselves, beside those of the part
+// structs.
 #ifndef restshape_forward_registered_parameters_h
 #define restshape_forward_registered_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/base/parameter_parsing.h>
+#include <restshape/forward/forward_parameters.h>
 
 #include <vector>
 
@@ -25,7 +27,7 @@ namespace RestShape
   /// InputError naming the parameter for a bad value.
   void
   parse_registered_parameters(dealii::ParameterHandler &prm,
-                              Parameters               &parameters);
+                              ForwardParameters        &parameters);
 } // namespace RestShape
 
 #endif

@@ -6,7 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/load_parameters.h>
 #include <restshape/forward/load_state.h>
 
 namespace RestShape

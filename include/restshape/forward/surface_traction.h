@@ -5,6 +5,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <restshape/base/parameter_parsing.h>
 #include <restshape/base/region.h>
 #include <restshape/forward/load_term.h>
 

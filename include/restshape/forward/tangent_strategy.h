@@ -4,7 +4,7 @@
 #ifndef restshape_forward_tangent_strategy_h
 #define restshape_forward_tangent_strategy_h
 
-#include <restshape/base/parameters.h>
+#include <restshape/forward/discretization_parameters.h>
 
 namespace RestShape
 {

@@ -6,13 +6,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/base/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/contact/target_relaxation.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/inverse/anderson.h>
 #include <restshape/inverse/carried_load.h>
 #include <restshape/inverse/direct_inverse.h>
+#include <restshape/inverse/inverse_parameters.h>
 #include <restshape/io/output.h>
 
 #include <string>

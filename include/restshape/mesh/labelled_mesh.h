@@ -9,9 +9,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <restshape/base/label_values.h>
-#include <restshape/base/parameters.h>
 #include <restshape/mesh/distributed_tetrahedra.h>
 #include <restshape/mesh/mesh_description.h>
+#include <restshape/mesh/mesh_parameters.h>
 
 #include <functional>
 #include <map>
@@ -48,6 +48,13 @@ namespace RestShape
 
     bool
     is_simplex() const;
+
+    /// Metres per unit of the mesh file (Mesh/Length unit).
+    double
+    length_unit() const
+    {
+      return parameters.length_unit;
+    }
 
     /// Labels present in the mesh, with their cell counts (coarse mesh).
     const std::map<Label, unsigned int> &

@@ -6,8 +6,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <restshape/base/parameters.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/postprocess/refinement_parameters.h>
 
 namespace RestShape
 {

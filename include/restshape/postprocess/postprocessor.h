@@ -8,7 +8,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/base/parameters.h>
+#include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/io/output.h>
@@ -76,11 +76,13 @@ namespace RestShape
     execute(const PostprocessInput &in) = 0;
   };
 
-  /// The reductions of the current solve.
+  /// The reductions of the current solve; the obstacle's force by label
+  /// with @p by_label (inverse runs report it at the target only).
   SolveReductions
   compute_reductions(const ForwardProblem &forward,
                      const ContactProblem *contact,
                      const VectorType     &u,
+                     const bool            by_label,
                      const MPI_Comm        comm);
 
   /**

@@ -1,11 +1,5 @@
-#include <deal.II/base/utilities.h>
-
-#include <restshape/base/command_line.h>
+#include <restshape/app/parameters.h>
 #include <restshape/base/input_error.h>
-#include <restshape/base/parameters.h>
-
-#include <cmath>
-#include <cstdlib>
 
 namespace RestShape
 {
@@ -23,36 +17,12 @@ namespace RestShape
   } // namespace
 
   using dealii::ParameterHandler;
-  namespace Patterns = dealii::Patterns;
-
-  dealii::Tensor<1, 3>
-  parse_vector(const std::string &text, const std::string &parameter)
-  {
-    const std::array<double, 3> v = parse_triple(parameter, text);
-    return dealii::Tensor<1, 3>({v[0], v[1], v[2]});
-  }
-
-  double
-  length_unit_in_metres(const std::string &name, const std::string &parameter)
-  {
-    if (name == "mm")
-      return 1e-3;
-    if (name == "m")
-      return 1.0;
-    throw InputError("",
-                     parameter,
-                     "unknown length unit '" + name + "'; expected mm or m");
-  }
 
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
     MeshParameters::declare_parameters(prm);
-    DiscretizationParameters::declare_parameters(prm);
-    MaterialParameters::declare_parameters(prm);
-    BoundaryParameters::declare_parameters(prm);
-    LoadParameters::declare_parameters(prm);
-    SolverParameters::declare_parameters(prm);
+    ForwardParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
@@ -68,18 +38,13 @@ namespace RestShape
     const std::vector<LabelListEntry> &more_label_lists)
   {
     mesh.parse_parameters(prm);
-    discretization.parse_parameters(prm);
-    materials.parse_parameters(prm);
-    boundary.parse_parameters(prm);
-    loads.parse_parameters(prm);
-    solver.parse_parameters(prm);
+    forward.parse_parameters(prm, mesh.length_unit);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);
     contact.parse_parameters(prm);
     inverse.parse_parameters(prm);
-    // The fluid levels are given in the mesh's length unit.
-    loads.fluid_level *= mesh.length_unit;
+    // The scenarios' fluid levels are given in the mesh's length unit.
     std::vector<std::string> names = {""};
     names.insert(names.end(), scenario_names.begin(), scenario_names.end());
     for (const std::string &name : names)
@@ -91,7 +56,9 @@ namespace RestShape
         scenario.fluid_level *= mesh.length_unit;
         scenario.craniotomy.scale(mesh.length_unit);
         scenario.read_surfaces();
-        scenario.check(loads, inverse.enabled);
+        scenario.check(forward.loads, inverse.enabled);
+        forward.pressure_set_later |=
+          scenario.has_pressure && scenario.pressure != 0;
         scenarios.push_back(scenario);
       }
     std::vector<LabelListEntry> entries = label_list_entries;
