@@ -1,51 +1,115 @@
 #!/bin/bash
-# Where Solver/Linear solver = auto switches: one forward solve of the brain
-# (prm/brain.prm without the skull, no inverse, no VTU) at 0, 1 and 2 global
-# refinements (3.6k, 25k, 186k DoFs), with the direct solver and with CG +
-# AMG, in one run: wall seconds, linear-solve seconds, peak memory and the
-# ratios cg-amg / direct. Both must reach the same equilibrium (largest
-# displacement to 1e-6 relative).
+# Where Solver/Linear solver = auto switches: runs of the brain with the
+# direct solver (MUMPS) and with CG + AMG, back to back, for
+#   free      prm/brain.prm without the skull (supports and stalk only),
+#             P1 at 0, 1 and 2 global refinements (3.6k, 25k, 186k DoFs),
+#             P2 at 0 (25k DoFs);
+#   contact   prm/brain_skull_cut.prm (the skull 0.5 mm into the brain,
+#             strict contact), stress-free from the image under the
+#             scene's buoyed gravity, P1 at 0 and 1 refinements, P2 at 0;
+#   inverse   prm/brain.prm as it is (the direct inverse, then the fixed
+#             point with the skull), P1 at 0 and 1 refinements, P2 at 0;
+# no scenario, no VTU. Prints wall seconds, the seconds of the solves
+# (linear solves; the whole direct inverse), Newton steps (the direct
+# inverse's steps and Jacobian products), the largest displacement, peak
+# memory, the ratios cg-amg / direct of wall time and memory, and the
+# difference of the potential energies (J).
+# Without contact both solvers must reach the same equilibrium (largest
+# displacement to 1e-6 relative). With contact the problem is not convex
+# (the skull's cavity is not): both must converge with the strict contact
+# conditions holding, but the inexact Newton steps of CG + AMG may end in
+# a neighbouring stable equilibrium; the energy difference shows which is
+# lower.
 #
 # usage: benchmarks/linear_solver_auto/run.sh [--coarse]
-#   --coarse: no refinement only (the version run in the tests)
-# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/linear_solver_auto).
+#   --coarse: P1 without refinement only, every series (the tests' version)
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
+# linear_solver_auto), SERIES ("free contact inverse"). Run from the
+# repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/linear_solver_auto}
-levels="0 1 2"
-[ "${1:-}" = --coarse ] && levels="0"
+series=${SERIES:-free contact inverse}
+coarse=false
+[ "${1:-}" = --coarse ] && coarse=true
 mkdir -p "$out"
 source "$(dirname "$0")/../common.sh"
 
+# cases SERIES: "degree:refinements" of a series.
+cases() {
+  if $coarse; then
+    echo "1:0"
+  elif [ "$1" = free ]; then
+    echo "1:0 1:1 1:2 2:0"
+  else
+    echo "1:0 1:1 2:0"
+  fi
+}
+
+# run SERIES DEGREE REFINEMENTS SOLVER DIR: one forward solve.
+run() {
+  local scene=prm/brain.prm
+  local extra=(--set "Contact/Obstacle file=" --set "Inverse problem/Enabled=false")
+  if [ "$1" = contact ]; then
+    scene=prm/brain_skull_cut.prm
+    extra=(--set "Loads/Surface pressure=0" --set "Inverse problem/Enabled=false")
+  elif [ "$1" = inverse ]; then
+    extra=()
+  fi
+  /usr/bin/time -f "%M" -o "$5.mem" "$exe" \
+    --set "Scenario/Enabled=false" --set "Output/Write VTU=false" \
+    --set "Discretization/Polynomial degree=$2" \
+    --set "Mesh/Global refinements=$3" --set "Solver/Linear solver=$4" \
+    --set "Output/Directory=$5" "${extra[@]}" "$scene" >"$5.log" 2>&1
+}
+
 echo "machine: $(machine)"
 echo
-echo "| refinements | DoFs | solver | wall s | linear solve s | peak MB | wall cg/direct | memory cg/direct |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| series | P | refinements | DoFs | solver | wall s | solve s | Newton steps | largest displacement mm | peak MB | wall cg/direct | memory cg/direct | energy cg - direct J |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 status=0
-for r in $levels; do
-  for solver in direct cg-amg; do
-    dir=$out/${r}_$solver
-    /usr/bin/time -f "%M" -o "$dir.mem" "$exe" --set "Inverse problem/Enabled=false" \
-      --set "Contact/Obstacle file=" --set "Scenario/Enabled=false" \
-      --set "Output/Write VTU=false" --set "Mesh/Global refinements=$r" \
-      --set "Solver/Linear solver=$solver" --set "Output/Directory=$dir" \
-      prm/brain.prm >"$dir.log" 2>&1 || status=1
-    s=$dir/summary.json
-    [ "$(value converged "$s")" = true ] || status=1
-    wall=$(value wall_seconds "$s")
-    mb=$(awk '{ printf "%.0f", $1 / 1024 }' "$dir.mem")
-    u=$(value max_displacement_mm "$s")
-    if [ "$solver" = direct ]; then
-      wall0=$wall mb0=$mb u0=$u
-    else
-      awk -v a="$u" -v b="$u0" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }' || {
-        echo "FAIL: largest displacement $u mm with cg-amg, $u0 mm direct"
+for s in $series; do
+  for c in $(cases "$s"); do
+    p=${c%:*} r=${c#*:}
+    for solver in direct cg-amg; do
+      dir=$out/${s}_p${p}_r${r}_$solver
+      rm -rf "$dir"
+      run "$s" "$p" "$r" "$solver" "$dir" || status=1
+      json=$dir/summary.json
+      if [ "$(value converged "$json")" != true ]; then
+        echo "FAIL: $s P$p r$r $solver did not converge ($dir.log)"
         status=1
-      }
-    fi
-    awk -v r="$r" -v n="$(value n_dofs "$s")" -v so="$solver" -v w="$wall" \
-      -v l="$(timer_seconds 'Linear solve' "$dir.log")" -v m="$mb" -v w0="$wall0" -v m0="$mb0" \
-      'BEGIN { printf "| %s | %s | %s | %.2f | %s | %s | %.2f | %.2f |\n", r, n, so, w, l, m, w / w0, m / m0 }'
+      fi
+      if [ "$s" != free ] && [ "$(value contact_conditions_hold "$json")" != true ]; then
+        echo "FAIL: $s P$p r$r $solver: the contact conditions do not hold"
+        status=1
+      fi
+      wall=$(value wall_seconds "$json")
+      mb=$(awk '{ printf "%.0f", $1 / 1024 }' "$dir.mem")
+      u=$(value max_displacement_mm "$json")
+      e=$(value potential_energy_J "$json")
+      if [ "$solver" = direct ]; then
+        wall0=$wall mb0=$mb u0=$u e0=$e
+      elif [ "$s" = free ]; then
+        awk -v a="$u" -v b="$u0" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }' || {
+          echo "FAIL: $s P$p r$r: largest displacement $u mm with cg-amg, $u0 mm direct"
+          status=1
+        }
+      fi
+      # The inverse's solves: the direct inverse's Newton steps and
+      # Jacobian products; the forward's: Newton steps and linear solves.
+      if [ "$s" = inverse ]; then
+        steps="$(value direct_inverse_newton_steps "$json") + $(value direct_inverse_jacobian_products "$json") products"
+        solve=$(timer_seconds 'Direct inverse' "$dir.log")
+      else
+        steps=$(value newton_iterations "$json")
+        solve=$(timer_seconds 'Linear solve' "$dir.log")
+      fi
+      awk -v se="$s" -v p="$p" -v r="$r" -v n="$(value n_dofs "$json")" -v so="$solver" -v w="$wall" \
+        -v l="$solve" -v k="$steps" \
+        -v u="$u" -v m="$mb" -v w0="$wall0" -v m0="$mb0" -v e="$e" -v e0="$e0" \
+        'BEGIN { printf "| %s | %s | %s | %s | %s | %.2f | %s | %s | %.3f | %s | %.2f | %.2f | %.3g |\n", se, p, r, n, so, w, l, k, u, m, w / w0, m / m0, e - e0 }'
+    done
   done
 done
 exit $status

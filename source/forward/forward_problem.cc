@@ -110,19 +110,23 @@ namespace RestShape
     if (parameters.solver.linear_solver != LinearSolverType::automatic)
       return parameters.solver.linear_solver;
     const types::global_dof_index n = dof_handler_.n_dofs();
+    const unsigned int            limit =
+      auto_direct_dofs(parameters.discretization.degree);
     // A direction that no fixed label holds leaves the tangent singular
     // until contact or the support acts: CG cannot solve that, the direct
     // solver can.
     const std::array<bool, 3> held     = fixed_components();
     const bool                all_held = held[0] && held[1] && held[2];
-    const LinearSolverType    chosen   = n <= auto_direct_dofs || !all_held ?
+    const LinearSolverType    chosen   = n <= limit || !all_held ?
                                            LinearSolverType::direct :
                                            LinearSolverType::cg_amg;
     pcout << "Linear solver: auto chose "
           << (chosen == LinearSolverType::direct ? "direct" : "cg-amg")
           << " for " << n << " DoFs ("
-          << (all_held ? "direct up to " + std::to_string(auto_direct_dofs) :
-                         std::string("a direction no fixed label holds"))
+          << (all_held ?
+                "direct up to " + std::to_string(limit) + " for degree " +
+                  std::to_string(parameters.discretization.degree) :
+                std::string("a direction no fixed label holds"))
           << ")" << std::endl;
     return chosen;
   }

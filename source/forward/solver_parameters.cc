@@ -20,8 +20,9 @@ namespace RestShape
       "Linear solver",
       "auto",
       Patterns::Selection("auto|direct|cg-amg"),
-      "auto: direct up to 20000 DoFs or when some direction is held by no fixed label, cg-amg otherwise (the run "
-      "says which it took). "
+      "auto: direct up to 20000 DoFs with linear elements and 50000 with "
+      "quadratic ones, or when some direction is held by no fixed label; "
+      "cg-amg otherwise (the run says which it took). "
       "direct: sparse LU (MUMPS through Trilinos Amesos). "
       "cg-amg: conjugate gradients preconditioned by "
       "Trilinos ML algebraic multigrid built with the six "

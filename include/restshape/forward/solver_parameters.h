@@ -16,7 +16,7 @@ namespace RestShape
 
   enum class LinearSolverType
   {
-    automatic, // direct up to auto_direct_dofs DoFs, else cg_amg
+    automatic, // direct up to auto_direct_dofs(degree) DoFs, else cg_amg
     direct,
     cg_amg
   };
@@ -30,8 +30,20 @@ namespace RestShape
     off
   };
 
-  /// Linear solver = auto: the direct solver up to this many DoFs.
-  constexpr unsigned int auto_direct_dofs = 20000;
+  /// Linear solver = auto: the direct solver up to this many DoFs, by the
+  /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md:
+  /// with linear elements CG + AMG overtakes it between 3.6k and 25k DoFs,
+  /// with and without contact; with quadratic ones the direct solver is
+  /// still 1.2-1.7 times faster at 25k DoFs, forward, contact and inverse).
+  constexpr unsigned int auto_direct_dofs_linear    = 20000;
+  constexpr unsigned int auto_direct_dofs_quadratic = 50000;
+
+  /// The limit of Linear solver = auto for elements of @p degree.
+  constexpr unsigned int
+  auto_direct_dofs(const unsigned int degree)
+  {
+    return degree == 1 ? auto_direct_dofs_linear : auto_direct_dofs_quadratic;
+  }
 
   struct SolverParameters
   {
