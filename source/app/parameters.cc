@@ -14,6 +14,15 @@ namespace RestShape
       {"Boundary conditions", "Elastic support labels", false},
       {"Loads", "Pressure labels", false},
       {"Contact", "Contact labels", false}};
+
+    /// The built-in parameters that name labels, then @p more.
+    std::vector<LabelListEntry>
+    with_built_in_entries(const std::vector<LabelListEntry> &more)
+    {
+      std::vector<LabelListEntry> entries = label_list_entries;
+      entries.insert(entries.end(), more.begin(), more.end());
+      return entries;
+    }
   } // namespace
 
   using dealii::ParameterHandler;
@@ -61,11 +70,7 @@ namespace RestShape
           scenario.has_pressure && scenario.pressure != 0;
         scenarios.push_back(scenario);
       }
-    std::vector<LabelListEntry> entries = label_list_entries;
-    entries.insert(entries.end(),
-                   more_label_lists.begin(),
-                   more_label_lists.end());
-    for (const LabelListEntry &e : entries)
+    for (const LabelListEntry &e : with_built_in_entries(more_label_lists))
       {
         prm.enter_subsection(e.section);
         label_lists.push_back(
@@ -85,11 +90,7 @@ namespace RestShape
     const LabelNames                  &names,
     const std::vector<LabelListEntry> &more_label_lists)
   {
-    std::vector<LabelListEntry> entries = label_list_entries;
-    entries.insert(entries.end(),
-                   more_label_lists.begin(),
-                   more_label_lists.end());
-    for (const LabelListEntry &e : entries)
+    for (const LabelListEntry &e : with_built_in_entries(more_label_lists))
       {
         prm.enter_subsection(e.section);
         prm.set(e.entry,
