@@ -280,9 +280,10 @@ namespace RestShape
   }
 
   NewtonSolver::LineSearchResult
-  NewtonSolver::line_search(const double residual,
-                            const double reference,
-                            const bool   set_changed)
+  NewtonSolver::line_search(const double    residual,
+                            const double    reference,
+                            const bool      set_changed,
+                            NewtonWatchdog *watchdog)
   {
     // Merit: the total potential energy (Armijo), which the Newton
     // direction descends where the tangent is positive definite; or, where
@@ -317,10 +318,36 @@ namespace RestShape
                                       energy_start + armijo * ls.alpha * slope);
         if (ls.accepted)
           return ls;
+        // A full step the energy rejects may still be the way to the
+        // solution: the watchdog (if given) takes it on trial.
+        if (trial == 0 && watchdog != nullptr && slope < 0 &&
+            watchdog->may_let_through() && std::isfinite(ls.trial_residual) &&
+            std::isfinite(system.energy()))
+          {
+            watchdog->let_through(d_start, energy_start + armijo * slope);
+            ls.accepted    = true;
+            ls.let_through = true;
+            return ls;
+          }
       }
     d = d_start;
     system.unknowns_changed();
     return ls;
+  }
+
+  void
+  NewtonSolver::restore_checkpoint(const NewtonWatchdog &watchdog,
+                                   SolveStatistics      &stats)
+  {
+    pcout << "      watchdog: the energy stayed above the target of the "
+             "full step taken on trial for "
+          << watchdog.trial_steps()
+          << " steps: back to the state before it, with the line search"
+          << std::endl;
+    system.unknowns() = watchdog.checkpoint();
+    system.unknowns_changed();
+    stats.residual_history.clear();
+    stats.round_off = 0;
   }
 
   void
@@ -347,6 +374,7 @@ namespace RestShape
                 std::string())
           << (contact != nullptr ? contact->progress_text() : std::string())
           << (shift > 0 ? format_text(", shift %.0e", shift) : std::string())
+          << (ls.let_through ? ", on trial (the energy rose)" : "")
           << std::endl;
   }
 
@@ -423,6 +451,7 @@ namespace RestShape
     // Inexact Newton: the previous step's residual and linear tolerance.
     std::pair<double, double> previous{0, 0};
     TangentStrategy strategy(configured_tangent, parameters.tangent_shift);
+    NewtonWatchdog  watchdog(parameters.watchdog_steps);
     // The last pass only checks convergence: the state the last allowed
     // step reached counts.
     const unsigned int max_steps = parameters.max_newton_iterations;
@@ -491,9 +520,14 @@ namespace RestShape
 
         const unsigned int linear_iterations =
           linear_step(residual, tol * reference, previous, stats);
-        const double           shift = strategy.shift();
-        const LineSearchResult ls =
-          line_search(residual, reference, set_changed);
+        const double shift = strategy.shift();
+        // Trials only along Newton's own direction: the exact tangent,
+        // unshifted, and without contact (going back would have to restore
+        // the active set).
+        const bool exact_newton = contact == nullptr && shift == 0 &&
+                                  strategy.tangent() == TangentType::consistent;
+        const LineSearchResult ls = line_search(
+          residual, reference, set_changed, exact_newton ? &watchdog : nullptr);
         print_step(++step,
                    residual / reference,
                    reference,
@@ -502,9 +536,22 @@ namespace RestShape
                    shift);
         if (!ls.accepted)
           {
+            if (watchdog.abandon())
+              {
+                restore_checkpoint(watchdog, stats);
+                continue;
+              }
             if (retry_rejected_step(strategy, ls, residual, reference, stats))
               continue;
             return false;
+          }
+        if (!ls.let_through &&
+            watchdog.judge(system.energy()) ==
+              NewtonWatchdog::Verdict::restore &&
+            ls.trial_residual > tol * reference)
+          {
+            restore_checkpoint(watchdog, stats);
+            continue;
           }
         stats.residual_history.push_back(ls.trial_residual / reference);
         const bool within_shift = strategy.accepted(ls.alpha < ls.alpha_max);

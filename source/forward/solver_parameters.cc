@@ -114,6 +114,20 @@ namespace RestShape
                       "Raise it for very fine meshes whose first Newton "
                       "steps at the full load invert cells.");
     prm.declare_entry(
+      "Watchdog steps",
+      std::to_string(default_watchdog_steps),
+      Patterns::Integer(0, 20),
+      "Without contact: a full Newton step at whose end the total potential "
+      "energy lies above the line search's (Armijo) target is taken anyway, "
+      "on trial, and the next steps (with their line searches) have this "
+      "many steps to bring the energy below that target; if they do not, "
+      "Newton goes back to the state before it and shortens the step as "
+      "the line search says (the watchdog of Chamberlain et al. 1982). It "
+      "lets through the first full step of large rotations (a beam bending "
+      "under its own weight from the straight state), whose shortened steps "
+      "cost more Newton steps (doc/benchmarks.md). 0: off, every step as "
+      "the line search says.");
+    prm.declare_entry(
       "Check stability",
       "auto",
       Patterns::Selection("auto|true|false"),
@@ -154,6 +168,7 @@ namespace RestShape
     tangent_shift             = prm.get_double("Tangent shift");
     max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
     initial_load_steps        = prm.get_integer("Initial load steps");
+    watchdog_steps            = prm.get_integer("Watchdog steps");
     const std::string stability = prm.get("Check stability");
     check_stability = stability == "auto" ? StabilityCheck::automatic :
                       stability == "true" ? StabilityCheck::on :

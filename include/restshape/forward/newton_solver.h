@@ -13,6 +13,7 @@
 #include <restshape/forward/discretization_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/newton_system.h>
+#include <restshape/forward/newton_watchdog.h>
 #include <restshape/forward/solver_parameters.h>
 #include <restshape/forward/tangent_strategy.h>
 
@@ -184,13 +185,18 @@ namespace RestShape
       double       trial_residual  = 0;
       bool         accepted        = false;
       unsigned int inverted_trials = 0;
+      bool         let_through     = false; // on trial (NewtonWatchdog)
     };
     /// Backtrack along update (Armijo on the potential energy, or on the
     /// residual norm); the state is restored when no step is accepted.
     LineSearchResult
-    line_search(const double residual,
-                const double reference,
-                const bool   set_changed);
+    line_search(const double    residual,
+                const double    reference,
+                const bool      set_changed,
+                NewtonWatchdog *watchdog);
+    /// Go back to the state a failed watchdog trial started from.
+    void
+    restore_checkpoint(const NewtonWatchdog &watchdog, SolveStatistics &stats);
     /// After a step the line search rejected: true if Newton retries
     /// from the same state with another tangent or shift (@p strategy),
     /// false if it fails (stats.failure says why).

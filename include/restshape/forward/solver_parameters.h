@@ -45,6 +45,9 @@ namespace RestShape
     return degree == 1 ? auto_direct_dofs_linear : auto_direct_dofs_quadratic;
   }
 
+  /// Solver/Watchdog steps (benchmarks/peer, doc/benchmarks.md).
+  constexpr unsigned int default_watchdog_steps = 3;
+
   struct SolverParameters
   {
     LinearSolverType linear_solver;
@@ -62,6 +65,9 @@ namespace RestShape
     unsigned int   max_load_step_halvings;
     unsigned int   initial_load_steps;
     StabilityCheck check_stability = StabilityCheck::automatic;
+    /// Newton steps a full step taken on trial has to lower the energy
+    /// below its Armijo target (NewtonWatchdog; 0: off).
+    unsigned int watchdog_steps = default_watchdog_steps;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
