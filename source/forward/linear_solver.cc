@@ -14,6 +14,7 @@
 #include <dlfcn.h>
 #include <restshape/base/input_error.h>
 #include <restshape/forward/linear_solver.h>
+#include <restshape/forward/symmetric_mumps.h>
 
 #include <algorithm>
 #include <cmath>
@@ -100,11 +101,41 @@ namespace RestShape
   }
 
   void
+  LinearSolver::factorise_symmetric(const Epetra_CrsMatrix &matrix,
+                                    const bool              new_matrix)
+  {
+    if (new_matrix || symmetric_direct == nullptr)
+      symmetric_direct = std::make_unique<SymmetricMumps>();
+    factored_matrix  = &matrix;
+    const int status = symmetric_direct->factorise(matrix);
+    if (status < 0)
+      throw SolverFailure(
+        "the direct solver (MUMPS, LDL^T) could not factorise the matrix "
+        "with " +
+        std::to_string(matrix.NumGlobalRows64()) + " unknowns (error " +
+        std::to_string(status) + ", " +
+        std::to_string(symmetric_direct->error_detail()) +
+        "): singular matrix? check that the scene fixes every rigid-body "
+        "motion");
+  }
+
+  void
   LinearSolver::factorise(const MatrixType &A)
   {
     Epetra_CrsMatrix &matrix =
       const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-    if (factored_matrix != &matrix)
+    // Direct factorisation = ldlt, one process and a symmetric tangent:
+    // MUMPS's LDL^T (SymmetricMumps).
+    if (parameters.symmetric_factorisation && symmetric &&
+        matrix.Comm().NumProc() == 1)
+      {
+        direct_solver.reset();
+        direct_problem.reset();
+        factorise_symmetric(matrix, factored_matrix != &matrix);
+        return;
+      }
+    symmetric_direct.reset();
+    if (factored_matrix != &matrix || direct_solver == nullptr)
       {
         // New matrix object (new mesh): new symbolic factorisation.
         direct_solver.reset();
@@ -160,6 +191,7 @@ namespace RestShape
   {
     direct_solver.reset();
     direct_problem.reset();
+    symmetric_direct.reset();
     factored_matrix = nullptr;
     last_matrix     = nullptr;
     amg.reset(); // before its null space
@@ -186,6 +218,16 @@ namespace RestShape
       {
         x = 0;
         solve_iteratively(*last_matrix, x, b, tolerance);
+        return;
+      }
+    if (symmetric_direct != nullptr)
+      {
+        x                = b;
+        const int status = symmetric_direct->solve(x.trilinos_vector()[0]);
+        if (status < 0)
+          throw SolverFailure("the direct solver (MUMPS, LDL^T) could not "
+                              "solve (error " +
+                              std::to_string(status) + ")");
         return;
       }
     AssertThrow(direct_solver != nullptr,

@@ -65,6 +65,9 @@ namespace RestShape
     unsigned int   max_load_step_halvings;
     unsigned int   initial_load_steps;
     StabilityCheck check_stability = StabilityCheck::automatic;
+    /// Solver/Direct factorisation = ldlt: MUMPS's LDL^T (SymmetricMumps)
+    /// for symmetric tangents on one process; false: its LU (Amesos).
+    bool symmetric_factorisation = false;
     /// Newton steps a full step taken on trial has to lower the energy
     /// below its Armijo target (NewtonWatchdog; 0: off).
     unsigned int watchdog_steps = default_watchdog_steps;
