@@ -56,10 +56,16 @@ namespace RestShape
   }
 
   void
-  SymmetricMumps::copy_pattern(const Epetra_CrsMatrix &A)
+  SymmetricMumps::copy_lower_triangle(const Epetra_CrsMatrix &A,
+                                      const bool              with_pattern)
   {
-    rows.clear();
-    columns.clear();
+    if (with_pattern)
+      {
+        rows.clear();
+        columns.clear();
+        values.clear();
+      }
+    std::size_t i = 0;
     for (int r = 0; r < A.NumMyRows(); ++r)
       {
         int     n;
@@ -70,30 +76,17 @@ namespace RestShape
         for (int k = 0; k < n; ++k)
           {
             const long long column = A.GCID64(c[k]);
-            if (column <= row)
+            if (column > row)
+              continue;
+            if (with_pattern)
               {
                 rows.push_back(static_cast<MUMPS_INT>(row + 1));
                 columns.push_back(static_cast<MUMPS_INT>(column + 1));
+                values.push_back(v[k]);
               }
+            else
+              values[i++] = v[k];
           }
-      }
-    values.resize(rows.size());
-  }
-
-  void
-  SymmetricMumps::copy_values(const Epetra_CrsMatrix &A)
-  {
-    std::size_t i = 0;
-    for (int r = 0; r < A.NumMyRows(); ++r)
-      {
-        int     n;
-        double *v;
-        int    *c;
-        A.ExtractMyRowView(r, n, v, c);
-        const long long row = A.GRID64(r);
-        for (int k = 0; k < n; ++k)
-          if (A.GCID64(c[k]) <= row)
-            values[i++] = v[k];
       }
   }
 
@@ -102,21 +95,20 @@ namespace RestShape
   {
     if (!analysed || A.NumMyNonzeros() != pattern_entries)
       {
-        copy_pattern(A);
+        copy_lower_triangle(A, true);
         pattern_entries = A.NumMyNonzeros();
         id.n            = static_cast<MUMPS_INT>(A.NumGlobalRows64());
         id.nnz          = static_cast<MUMPS_INT8>(rows.size());
         id.irn          = rows.data();
         id.jcn          = columns.data();
         id.a            = values.data();
-        copy_values(A);
         call(job_analyse);
         analysed = id.infog[0] >= 0;
         if (!analysed)
           return id.infog[0];
       }
     else
-      copy_values(A);
+      copy_lower_triangle(A, false);
     id.icntl[13] = workspace_margin_percent;
     call(job_factorise);
     for (unsigned int retry = 0; retry < workspace_retries &&

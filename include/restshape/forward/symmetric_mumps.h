@@ -45,12 +45,11 @@ namespace RestShape
     error_detail() const;
 
   private:
-    /// The lower triangle's pattern of @p A (1-based, as MUMPS wants it).
+    /// The lower triangle of @p A in MUMPS's form (1-based indices):
+    /// pattern and values, or (@p with_pattern false) the values only, in
+    /// the order of the pattern copied before.
     void
-    copy_pattern(const Epetra_CrsMatrix &A);
-    /// The lower triangle's values of @p A, in the order of the pattern.
-    void
-    copy_values(const Epetra_CrsMatrix &A);
+    copy_lower_triangle(const Epetra_CrsMatrix &A, const bool with_pattern);
     void
     call(const int job);
 
