@@ -24,6 +24,16 @@ namespace RestShape
     constexpr unsigned int line_search_trials = 12;
     /// Armijo's sufficient decrease.
     constexpr double armijo = 1e-4;
+
+    /// A change of the constraints or of the state (a release, a new
+    /// active set, a return to the watchdog's kept state) starts a new
+    /// convergence history.
+    void
+    start_new_history(SolveStatistics &stats)
+    {
+      stats.residual_history.clear();
+      stats.round_off = 0;
+    }
   } // namespace
 
   NewtonSolver::NewtonSolver(NewtonSystem           &system,
@@ -216,21 +226,16 @@ namespace RestShape
             << std::endl;
     if (contact == nullptr)
       return State::converged;
-    // A change of the constraints starts a new convergence history.
-    const auto new_history = [&stats]() {
-      stats.residual_history.clear();
-      stats.round_off = 0;
-    };
     if (contact->thaw_if_adhesive(system.raw_residual()))
       {
-        new_history();
+        start_new_history(stats);
         pcout << "      active nodes pull on the obstacle: released"
               << contact->progress_text() << std::endl;
         return State::released;
       }
     if (contact_conditions_hold(stats, reference, corrections))
       return State::converged;
-    new_history();
+    start_new_history(stats);
     return stats.failure.empty() ? State::released : State::failed;
   }
 
@@ -346,8 +351,7 @@ namespace RestShape
           << std::endl;
     system.unknowns() = watchdog.checkpoint();
     system.unknowns_changed();
-    stats.residual_history.clear();
-    stats.round_off = 0;
+    start_new_history(stats);
   }
 
   void
@@ -472,10 +476,7 @@ namespace RestShape
                                                      it == 1);
             stats.active_set_changes += set_changed;
             if (set_changed)
-              {
-                stats.residual_history.clear();
-                stats.round_off = 0;
-              }
+              start_new_history(stats);
           }
         constraints = &system.make_step_constraints();
         system.set_tangent_type(strategy.tangent());
