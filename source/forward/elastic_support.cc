@@ -17,18 +17,13 @@ namespace RestShape
   {
     if (!(k > 0 && labels.count(c.cell->material_id())))
       return;
-    const FEValuesExtractors::Vector u(0);
-    const FESystem<3>               &fe     = context.fe;
-    const unsigned int               n_dofs = fe.n_dofs_per_cell();
-    FaceScratch                     &s      = c.scratch;
+    const unsigned int               n_dofs    = context.fe.n_dofs_per_cell();
+    const std::vector<unsigned int> &component = c.d.components();
+    const FaceScratch               &s         = c.scratch;
     for (const unsigned int f : c.cell->face_indices())
       if (c.cell->face(f)->at_boundary())
         {
-          FEFaceValues<3> &fv = s.fe_face_values;
-          fv.reinit(c.cell, f);
-          fv[u].get_function_values(c.d, s.face_d);
-          fv[u].get_function_values(c.w, s.face_w);
-          fv[u].get_function_gradients(c.w, s.face_grad_w);
+          const FaceScratch &fv = c.face(f);
           for (const unsigned int q : fv.quadrature_point_indices())
             {
               const Tensor<1, 3> u_rest = s.face_d[q] - s.face_w[q];
@@ -37,12 +32,12 @@ namespace RestShape
               c.energy += 0.5 * k * u_rest.norm_square() * JxW;
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {
-                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  const unsigned int ci  = component[i];
                   const double       phi = fv.shape_value(i, q);
                   c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
                   if (c.matrix)
                     for (unsigned int j = 0; j < n_dofs; ++j)
-                      if (fe.system_to_component_index(j).first == ci)
+                      if (component[j] == ci)
                         c.cell_matrix(i, j) +=
                           k * phi * fv.shape_value(j, q) * JxW;
                 }

@@ -65,6 +65,7 @@ namespace RestShape
                                                comm,
                                                relevant_dofs);
     tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
+    scatter.forget();
 
     for (VectorType *v : {&rhs_newton,
                           &residual_raw,

@@ -21,12 +21,14 @@ namespace RestShape
                 const Quadrature<3>    &quadrature,
                 const Quadrature<2>    &face_quadrature)
       : fe_values(mapping,
-                  fe,
+                  fe.base_element(0),
                   quadrature,
                   update_values | update_gradients | update_JxW_values |
                     update_quadrature_points)
       , grad_d(quadrature.size())
       , grad_w(quadrature.size())
+      , d_cell(fe)
+      , w_cell(fe)
       , faces(mapping, fe, face_quadrature)
       , b(fe.n_dofs_per_cell())
       , v(fe.n_dofs_per_cell())
@@ -34,16 +36,17 @@ namespace RestShape
 
     ScratchData(const ScratchData &other)
       : ScratchData(other.fe_values.get_mapping(),
-                    other.fe_values.get_fe(),
+                    other.faces.fe,
                     other.fe_values.get_quadrature(),
                     other.faces.fe_face_values.get_quadrature())
     {}
 
-    FEValues<3>               fe_values;
+    FEValues<3>               fe_values; // of the scalar base element
     std::vector<Tensor2>      grad_d, grad_w;
-    FaceScratch               faces; // of the load terms
-    std::vector<Tensor<1, 3>> b;     // gradient w.r.t. the rest configuration
-    std::vector<Tensor2>      v;     // A : (e_c (x) b_j), per shape function j
+    LocalField                d_cell, w_cell; // d and w on the cell
+    FaceScratch               faces;          // of the load terms
+    std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
+    std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
   };
 
   struct ForwardProblem::CopyData
@@ -61,8 +64,9 @@ namespace RestShape
     Vector<double>                       cell_external;  // f_ext
     Vector<double>                       cell_magnitude; // |f_ext| + |f_int|
     std::vector<types::global_dof_index> dofs;
-    bool                                 valid = true;
-    Point<3>                             center; // of an inverted cell
+    bool                                 valid      = true;
+    unsigned int                         cell_index = 0; // active index
+    Point<3>                             center;         // of an inverted cell
     types::material_id                   label = 0;
     double energy                              = 0; // int W dV_rest - f_ext . d
   };
@@ -81,8 +85,10 @@ namespace RestShape
     const bool         matrix     = (what == Assemble::residual_and_matrix);
     const bool         magnitudes = (what == Assemble::residual_and_magnitudes);
     FEValues<3>       &fe_values  = scratch.fe_values;
-    fe_values.reinit(cell);
+    // As a cell of the mesh: the DoFHandler's cell is of the vector element.
+    fe_values.reinit(static_cast<Triangulation<3>::cell_iterator>(cell));
     cell->get_dof_indices(copy.dofs);
+    copy.cell_index    = cell->active_cell_index();
     copy.cell_rhs      = 0;
     copy.cell_external = 0;
     if (magnitudes)
@@ -91,9 +97,13 @@ namespace RestShape
       copy.cell_matrix = 0;
     copy.valid = true;
 
-    const FEValuesExtractors::Vector u(0);
-    fe_values[u].get_function_gradients(d_buffer, scratch.grad_d);
-    fe_values[u].get_function_gradients(w_buffer, scratch.grad_w);
+    scratch.d_cell.gather(d_buffer, copy.dofs);
+    scratch.w_cell.gather(w_buffer, copy.dofs);
+    scratch.d_cell.gradients(fe_values, scratch.grad_d);
+    scratch.w_cell.gradients(fe_values, scratch.grad_w);
+    scratch.faces.forget();
+    const std::vector<unsigned int> &component = scratch.d_cell.components();
+    const std::vector<unsigned int> &scalar = scratch.d_cell.scalar_functions();
 
     const Label        label = cell->material_id();
     const MaterialLaw &law   = material_table.law(label);
@@ -133,9 +143,11 @@ namespace RestShape
         const Tensor2 G_inv_T = transpose(G_inv);
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
-            const unsigned int ci = fe_.system_to_component_index(i).first;
-            scratch.b[i]          = G_inv_T * fe_values.shape_grad(i, q);
-            const double f_ext = fe_values.shape_value(i, q) * f_body[ci] * JxW;
+            const unsigned int ci = component[i];
+            const unsigned int si = scalar[i];
+            scratch.b[i]          = G_inv_T * fe_values.shape_grad(si, q);
+            const double f_ext =
+              fe_values.shape_value(si, q) * f_body[ci] * JxW;
             const double f_int = (P[ci] * scratch.b[i]) * dV_rest;
             copy.cell_external(i) += f_ext;
             copy.cell_rhs(i) += f_ext - f_int;
@@ -146,7 +158,7 @@ namespace RestShape
           continue;
         for (unsigned int j = 0; j < n_dofs; ++j)
           {
-            const unsigned int cj = fe_.system_to_component_index(j).first;
+            const unsigned int cj = component[j];
             Tensor2           &v  = scratch.v[j];
             for (unsigned int c = 0; c < 3; ++c)
               for (unsigned int K = 0; K < 3; ++K)
@@ -159,7 +171,7 @@ namespace RestShape
           }
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
-            const unsigned int ci = fe_.system_to_component_index(i).first;
+            const unsigned int ci = component[i];
             for (unsigned int j = 0; j <= i; ++j)
               copy.cell_matrix(i, j) += scratch.v[j][ci] * scratch.b[i];
           }
@@ -179,8 +191,8 @@ namespace RestShape
                                       const bool          matrix) const
   {
     const LoadCell c{cell,
-                     d_buffer,
-                     w_buffer,
+                     scratch.d_cell,
+                     scratch.w_cell,
                      current_load,
                      matrix,
                      scratch.faces,
@@ -195,11 +207,23 @@ namespace RestShape
       if (term->dead())
         term->assemble_faces(c);
     for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
-      copy.energy -= copy.cell_external(i) *
-                     (d_buffer(copy.dofs[i]) - w_buffer(copy.dofs[i]));
+      copy.energy -=
+        copy.cell_external(i) * (scratch.d_cell[i] - scratch.w_cell[i]);
     for (const auto &term : load_terms)
       if (!term->dead())
         term->assemble_faces(c);
+  }
+
+  ForwardProblem::ScratchData &
+  ForwardProblem::scratch_of_this_thread()
+  {
+    std::shared_ptr<ScratchData> &scratch = thread_scratch.get();
+    if (!scratch)
+      scratch = std::make_shared<ScratchData>(*mapping_,
+                                              fe_,
+                                              cell_quadrature,
+                                              face_quadrature_);
+    return *scratch;
   }
 
   bool
@@ -232,12 +256,14 @@ namespace RestShape
     InvertedCells inverted;
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
+    struct NoScratch // each thread keeps its own (thread_scratch)
+    {};
     WorkStream::run(
       CellFilter(IteratorFilters::LocallyOwnedCell(),
                  dof_handler_.begin_active()),
       CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler_.end()),
-      [this, what](const CellFilter &cell, ScratchData &s, CopyData &c) {
-        local_assemble(cell, s, c, what);
+      [this, what](const CellFilter &cell, NoScratch &, CopyData &c) {
+        local_assemble(cell, scratch_of_this_thread(), c, what);
       },
       [this, what, matrix, &all_valid, &energy, &inverted](const CopyData &c) {
         if (!c.valid)
@@ -266,10 +292,15 @@ namespace RestShape
                                                         c.dofs,
                                                         magnitude_buffer);
         if (matrix)
-          constraints_newton.distribute_local_to_global(
-            c.cell_matrix, c.cell_rhs, c.dofs, tangent, rhs_buffer);
+          scatter.add(c.cell_index,
+                      constraints_newton,
+                      c.cell_matrix,
+                      c.cell_rhs,
+                      c.dofs,
+                      tangent,
+                      rhs_buffer);
       },
-      ScratchData(*mapping_, fe_, cell_quadrature, face_quadrature_),
+      NoScratch(),
       CopyData(fe_.n_dofs_per_cell()),
       2 * MultithreadInfo::n_threads(),
       64);

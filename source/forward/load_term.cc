@@ -25,8 +25,9 @@ namespace RestShape
   FaceScratch::FaceScratch(const Mapping<3>       &mapping,
                            const FiniteElement<3> &fe,
                            const Quadrature<2>    &face_quadrature)
-    : fe_face_values(mapping,
-                     fe,
+    : fe(fe)
+    , fe_face_values(mapping,
+                     fe.base_element(0),
                      face_quadrature,
                      update_values | update_gradients |
                        update_quadrature_points | update_normal_vectors |
@@ -36,11 +37,33 @@ namespace RestShape
     , face_grad_d(face_quadrature.size())
     , face_grad_w(face_quadrature.size())
     , face_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
-  {}
+    , scalar(fe.n_dofs_per_cell())
+  {
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      scalar[i] = fe.system_to_component_index(i).second;
+  }
 
   FaceScratch::FaceScratch(const FaceScratch &other)
     : FaceScratch(other.fe_face_values.get_mapping(),
-                  other.fe_face_values.get_fe(),
+                  other.fe,
                   other.fe_face_values.get_quadrature())
   {}
+
+  void
+  FaceScratch::reinit(const CellIterator &cell,
+                      const unsigned int  f,
+                      const LocalField   &d,
+                      const LocalField   &w)
+  {
+    if (f == current_face)
+      return;
+    // As a cell of the mesh: the DoFHandler's cell is of the vector element.
+    fe_face_values.reinit(static_cast<Triangulation<3>::cell_iterator>(cell),
+                          f);
+    d.values(fe_face_values, face_d);
+    w.values(fe_face_values, face_w);
+    d.gradients(fe_face_values, face_grad_d);
+    w.gradients(fe_face_values, face_grad_w);
+    current_face = f;
+  }
 } // namespace RestShape

@@ -165,30 +165,23 @@ namespace RestShape
   {
     if (!load->acts(c.load) || !labels.count(c.cell->material_id()))
       return;
-    const bool                       follower = load->follower();
-    const FESystem<3>               &fe       = context.fe;
-    const unsigned int               n_dofs   = fe.n_dofs_per_cell();
-    const FEValuesExtractors::Vector u(0);
-    FaceScratch                     &s        = c.scratch;
-    FEFaceValues<3>                 &fv       = s.fe_face_values;
-    FullMatrix<double>              &K        = s.face_matrix;
-    bool                             any_face = false;
+    const bool          follower = load->follower();
+    const FESystem<3>  &fe       = context.fe;
+    const unsigned int  n_dofs   = fe.n_dofs_per_cell();
+    FullMatrix<double> &K        = c.scratch.face_matrix;
+    bool                any_face = false;
     if (c.matrix && follower)
       K = 0;
     for (const unsigned int f : c.cell->face_indices())
       {
         if (!c.cell->face(f)->at_boundary())
           continue;
-        any_face = true;
-        fv.reinit(c.cell, f);
+        any_face              = true;
+        const FaceScratch &fv = c.face(f);
         // An opening of the skull: its faces lose the opening's pressure.
         const SurfaceLoad::Face face = face_kind(c.cell, f);
         if (follower)
           {
-            fv[u].get_function_values(c.d, s.face_d);
-            fv[u].get_function_values(c.w, s.face_w);
-            fv[u].get_function_gradients(c.d, s.face_grad_d);
-            fv[u].get_function_gradients(c.w, s.face_grad_w);
             for (const unsigned int q : fv.quadrature_point_indices())
               add_follower(c, q, face);
             continue;
@@ -225,14 +218,14 @@ namespace RestShape
                                 const unsigned int      q,
                                 const SurfaceLoad::Face face) const
   {
-    const FESystem<3>     &fe     = context.fe;
-    const unsigned int     n_dofs = fe.n_dofs_per_cell();
-    FaceScratch           &s      = c.scratch;
-    const FEFaceValues<3> &fv     = s.fe_face_values;
-    const Tensor2          I      = unit_symmetric_tensor<3>();
-    const Point<3>        &X      = fv.quadrature_point(q);
-    const Tensor<1, 3>    &N      = fv.normal_vector(q);
-    const double           dA     = fv.JxW(q);
+    const FESystem<3>  &fe     = context.fe;
+    const unsigned int  n_dofs = fe.n_dofs_per_cell();
+    FaceScratch        &s      = c.scratch;
+    const FaceScratch  &fv     = s;
+    const Tensor2       I      = unit_symmetric_tensor<3>();
+    const Point<3>     &X      = fv.quadrature_point(q);
+    const Tensor<1, 3> &N      = fv.normal_vector(q);
+    const double        dA     = fv.JxW(q);
     // Follower: -p(x) cof(F) N dA on the current face, x = X + d.
     const Tensor2      F = I + s.face_grad_d[q];
     const Point<3>     x = X + s.face_d[q];
@@ -243,10 +236,10 @@ namespace RestShape
     c.energy += load->potential_flux(c.load, x, face) * a -
                 load->potential_flux(c.load, X + s.face_w[q], face) *
                   cofactor_times(G, N) * dA;
+    const std::vector<unsigned int> &component = c.d.components();
     for (unsigned int i = 0; i < n_dofs; ++i)
       {
-        const double f_ext =
-          -p * fv.shape_value(i, q) * a[fe.system_to_component_index(i).first];
+        const double f_ext = -p * fv.shape_value(i, q) * a[component[i]];
         c.cell_external(i) += f_ext;
         c.cell_rhs(i) += f_ext;
       }
@@ -256,14 +249,13 @@ namespace RestShape
     const Tensor<1, 3> grad_p = load->pressure_gradient(c.load, x, face);
     for (unsigned int j = 0; j < n_dofs; ++j)
       {
-        const unsigned int cj    = fe.system_to_component_index(j).first;
+        const unsigned int cj    = component[j];
         const double       phi_j = fv.shape_value(j, q);
         const Tensor<1, 3> dt =
           grad_p[cj] * phi_j * a +
           p * cofactor_derivative(F, N, cj, fv.shape_grad(j, q)) * dA;
         for (unsigned int i = 0; i < n_dofs; ++i)
-          s.face_matrix(i, j) +=
-            fv.shape_value(i, q) * dt[fe.system_to_component_index(i).first];
+          s.face_matrix(i, j) += fv.shape_value(i, q) * dt[component[i]];
       }
   }
 

@@ -109,12 +109,11 @@ namespace RestShape
     if (c.load.terms == 0)
       return;
     const FESystem<3> &fe = context.fe;
-    FEFaceValues<3>   &fv = c.scratch.fe_face_values;
     const Tensor<1, 3> t  = c.load.terms * traction;
     for (const unsigned int f : c.cell->face_indices())
       if (loaded(c.cell, f))
         {
-          fv.reinit(c.cell, f);
+          const FaceScratch &fv = c.face(f);
           for (const unsigned int q : fv.quadrature_point_indices())
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {

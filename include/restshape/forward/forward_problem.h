@@ -11,6 +11,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/thread_local_storage.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -30,6 +31,7 @@
 #include <restshape/forward/newton_solver.h>
 #include <restshape/forward/newton_system.h>
 #include <restshape/forward/surface_pressure.h>
+#include <restshape/forward/tangent_scatter.h>
 #include <restshape/forward/tangent_strategy.h>
 #include <restshape/mesh/labelled_mesh.h>
 
@@ -421,7 +423,15 @@ namespace RestShape
 
     dealii::AffineConstraints<double> constraints_newton; // + contact
 
-    MatrixType tangent;
+    MatrixType     tangent;
+    TangentScatter scatter; // of the cells' matrices into tangent
+    // Each thread's assembly workspace, kept from one assembly to the next:
+    // building its FEValues and FEFaceValues costs as much as assembling
+    // a thousand P1 cells.
+    dealii::Threads::ThreadLocalStorage<std::shared_ptr<ScratchData>>
+      thread_scratch;
+    ScratchData            &
+    scratch_of_this_thread();
     VectorType rhs_newton, residual_raw, residual_condensed, external_condensed;
     VectorType d, d_ghost, w, w_ghost;
     // The assembly reads d and w from, and adds into, deal.II's distributed

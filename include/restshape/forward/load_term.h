@@ -17,6 +17,7 @@
 #include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/linear_solver.h>
 #include <restshape/forward/load_state.h>
+#include <restshape/forward/local_field.h>
 #include <restshape/forward/material.h>
 #include <restshape/mesh/labelled_mesh.h>
 
@@ -67,7 +68,11 @@ namespace RestShape
             f(cell, face);
   }
 
-  /// Per-thread workspace of the face terms (sized for one cell).
+  /// Per-thread workspace of the face terms (sized for one cell). The
+  /// load terms of one cell share it: it is set on a face once, with the
+  /// state's values and gradients there. Its FEFaceValues are of the
+  /// scalar base element; shape_value() and shape_grad() take the vector
+  /// element's shape functions.
   struct FaceScratch
   {
     FaceScratch(const dealii::Mapping<3>       &mapping,
@@ -75,19 +80,72 @@ namespace RestShape
                 const dealii::Quadrature<2>    &face_quadrature);
     FaceScratch(const FaceScratch &other);
 
+    /// Set on face @p f of @p cell with d and w there, unless it already
+    /// is (since the last forget()).
+    void
+    reinit(const CellIterator &cell,
+           const unsigned int  f,
+           const LocalField   &d,
+           const LocalField   &w);
+
+    /// A new cell or state: no face is current.
+    void
+    forget()
+    {
+      current_face = dealii::numbers::invalid_unsigned_int;
+    }
+
+    /// Shape function @p i of the vector element (its nonzero component)
+    /// at point @p q.
+    double
+    shape_value(const unsigned int i, const unsigned int q) const
+    {
+      return fe_face_values.shape_value(scalar[i], q);
+    }
+    const dealii::Tensor<1, 3> &
+    shape_grad(const unsigned int i, const unsigned int q) const
+    {
+      return fe_face_values.shape_grad(scalar[i], q);
+    }
+    double
+    JxW(const unsigned int q) const
+    {
+      return fe_face_values.JxW(q);
+    }
+    const dealii::Tensor<1, 3> &
+    normal_vector(const unsigned int q) const
+    {
+      return fe_face_values.normal_vector(q);
+    }
+    const dealii::Point<3> &
+    quadrature_point(const unsigned int q) const
+    {
+      return fe_face_values.quadrature_point(q);
+    }
+    auto
+    quadrature_point_indices() const
+    {
+      return fe_face_values.quadrature_point_indices();
+    }
+
+    const dealii::FiniteElement<3>   &fe; // the vector element
     dealii::FEFaceValues<3>           fe_face_values;
     std::vector<dealii::Tensor<1, 3>> face_d, face_w;
     std::vector<Tensor2>              face_grad_d, face_grad_w;
     dealii::FullMatrix<double>        face_matrix;
+
+  private:
+    std::vector<unsigned int> scalar; // base function of shape function i
+    unsigned int current_face = dealii::numbers::invalid_unsigned_int;
   };
 
   /// One cell of the assembly as a load term sees it: the state (d, w:
-  /// displacement and rest displacement, m), the load, and where its
-  /// contributions go.
+  /// displacement and rest displacement, m, on this cell), the load, and
+  /// where its contributions go.
   struct LoadCell
   {
     const CellIterator &cell;
-    const BufferType   &d, &w;
+    const LocalField   &d, &w;
     const LoadState    &load;
     const bool          matrix; // whether the tangent is assembled
     FaceScratch        &scratch;
@@ -96,6 +154,14 @@ namespace RestShape
     dealii::Vector<double>     &cell_rhs;    // + f_ext
     dealii::Vector<double>     &cell_external;
     double                     &energy; // + the term's own potential (J)
+
+    /// The face scratch set on face @p f of this cell.
+    const FaceScratch &
+    face(const unsigned int f) const
+    {
+      scratch.reinit(cell, f, d, w);
+      return scratch;
+    }
   };
 
   /**
