@@ -25,40 +25,54 @@ namespace RestShape
       coefficients[i] = v(dofs[i]);
   }
 
-  // Sums in the order of the shape functions, skipping zero coefficients,
-  // as deal.II's get_function_values/gradients do, of the same scalar
-  // values: the same numbers.
+  namespace
+  {
+    // result[q][c] = sum_i coefficient_i shape(scalar_i, q), c the
+    // component of shape function i: in the order of the shape functions,
+    // skipping zero coefficients, as deal.II's get_function_values and
+    // _gradients do, of the same scalar values: the same numbers.
+    template <typename Result, typename Shape>
+    void
+    accumulate(const std::vector<double>       &coefficients,
+               const std::vector<unsigned int> &component,
+               const std::vector<unsigned int> &scalar,
+               const unsigned int               n_points,
+               std::vector<Result>             &result,
+               const Shape                     &shape)
+    {
+      std::fill(result.begin(), result.begin() + n_points, Result());
+      for (unsigned int i = 0; i < coefficients.size(); ++i)
+        if (const double value = coefficients[i]; value != 0)
+          for (unsigned int q = 0; q < n_points; ++q)
+            result[q][component[i]] += value * shape(scalar[i], q);
+    }
+  } // namespace
+
   void
   LocalField::values(const FEValuesBase<3>     &fe_values,
                      std::vector<Tensor<1, 3>> &result) const
   {
-    const unsigned int n_points = fe_values.n_quadrature_points;
-    std::fill(result.begin(), result.begin() + n_points, Tensor<1, 3>());
-    for (unsigned int i = 0; i < coefficients.size(); ++i)
-      {
-        const double value = coefficients[i];
-        if (value == 0)
-          continue;
-        const unsigned int c = component[i];
-        for (unsigned int q = 0; q < n_points; ++q)
-          result[q][c] += value * fe_values.shape_value(scalar[i], q);
-      }
+    accumulate(coefficients,
+               component,
+               scalar,
+               fe_values.n_quadrature_points,
+               result,
+               [&](const unsigned int k, const unsigned int q) {
+                 return fe_values.shape_value(k, q);
+               });
   }
 
   void
   LocalField::gradients(const FEValuesBase<3>     &fe_values,
                         std::vector<Tensor<2, 3>> &result) const
   {
-    const unsigned int n_points = fe_values.n_quadrature_points;
-    std::fill(result.begin(), result.begin() + n_points, Tensor<2, 3>());
-    for (unsigned int i = 0; i < coefficients.size(); ++i)
-      {
-        const double value = coefficients[i];
-        if (value == 0)
-          continue;
-        const unsigned int c = component[i];
-        for (unsigned int q = 0; q < n_points; ++q)
-          result[q][c] += value * fe_values.shape_grad(scalar[i], q);
-      }
+    accumulate(coefficients,
+               component,
+               scalar,
+               fe_values.n_quadrature_points,
+               result,
+               [&](const unsigned int k, const unsigned int q) {
+                 return fe_values.shape_grad(k, q);
+               });
   }
 } // namespace RestShape
