@@ -9,6 +9,12 @@
 #             scene's buoyed gravity, P1 at 0 and 1 refinements, P2 at 0;
 #   inverse   prm/brain.prm as it is (the direct inverse, then the fixed
 #             point with the skull), P1 at 0 and 1 refinements, P2 at 0;
+#   tracts_free, tracts_contact, tracts_inverse
+#             the same on another brain, that of prm/brain_tracts.prm
+#             (4,115 nodes, five tissues: 12k DoFs P1, 91k P2), its
+#             cutting skull made here by restshape-mesh as
+#             meshes/brain_tracts.sh makes the scene's, 0.5 mm into the
+#             brain; P1, and P2 without contact;
 # no scenario, no VTU. Prints wall seconds, the seconds of the solves
 # (linear solves; the whole direct inverse), Newton steps (the direct
 # inverse's steps and Jacobian products), the largest displacement, peak
@@ -22,14 +28,16 @@
 # lower.
 #
 # usage: benchmarks/linear_solver_auto/run.sh [--coarse]
-#   --coarse: P1 without refinement only, every series (the tests' version)
+#   --coarse: P1 without refinement only, the series free, contact and
+#             inverse (the tests' version)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
-# linear_solver_auto), SERIES ("free contact inverse"). Run from the
-# repository root.
+# linear_solver_auto), SERIES ("free contact inverse tracts_free
+# tracts_contact tracts_inverse"). Run from the repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/linear_solver_auto}
-series=${SERIES:-free contact inverse}
+series=${SERIES:-free contact inverse tracts_free tracts_contact tracts_inverse}
+[ "${1:-}" = --coarse ] && series=${SERIES:-free contact inverse}
 coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
 mkdir -p "$out"
@@ -41,21 +49,58 @@ cases() {
     echo "1:0"
   elif [ "$1" = free ]; then
     echo "1:0 1:1 1:2 2:0"
+  elif [ "$1" = tracts_free ]; then
+    echo "1:0 2:0"
+  elif [ "${1#tracts}" != "$1" ]; then
+    echo "1:0"
   else
     echo "1:0 1:1 2:0"
   fi
+}
+
+# The tracts brain's cutting skull and its contact scene, in $out/tracts.
+tracts_scene() {
+  local dir=$out/tracts bin
+  bin=$(dirname "$exe")
+  [ -f "$dir/contact.prm" ] && return
+  mkdir -p "$dir"
+  sed -e 's/--skull-gap 2/--skull-gap -0.5/' meshes/brain_tracts.sh >"$dir/make.sh"
+  BUILD=$bin bash "$dir/make.sh" "$dir" >"$dir/make.log" 2>&1 || {
+    echo "FAIL: the tracts skull ($dir/make.log)"
+    exit 1
+  }
+  cat >"$dir/contact.prm" <<EOF
+include prm/brain_tracts.prm
+subsection Boundary conditions
+  set Elastic support stiffness = 0
+end
+subsection Contact
+  set Obstacle file  = $dir/brain_tracts_skull.off
+  set Gap tolerance  = 0.01
+  set Pull tolerance = 1
+end
+subsection Loads
+  set Surface pressure = 0
+end
+EOF
 }
 
 # run SERIES DEGREE REFINEMENTS SOLVER DIR: one forward solve.
 run() {
   local scene=prm/brain.prm
   local extra=(--set "Contact/Obstacle file=" --set "Inverse problem/Enabled=false")
-  if [ "$1" = contact ]; then
-    scene=prm/brain_skull_cut.prm
-    extra=(--set "Loads/Surface pressure=0" --set "Inverse problem/Enabled=false")
-  elif [ "$1" = inverse ]; then
-    extra=()
-  fi
+  case $1 in
+    contact)
+      scene=prm/brain_skull_cut.prm
+      extra=(--set "Loads/Surface pressure=0" --set "Inverse problem/Enabled=false") ;;
+    inverse) extra=() ;;
+    tracts_free) scene=prm/brain_tracts.prm ;;
+    tracts_contact)
+      tracts_scene
+      scene=$out/tracts/contact.prm
+      extra=(--set "Inverse problem/Enabled=false") ;;
+    tracts_inverse) scene=prm/brain_tracts.prm extra=() ;;
+  esac
   /usr/bin/time -f "%M" -o "$5.mem" "$exe" \
     --set "Scenario/Enabled=false" --set "Output/Write VTU=false" \
     --set "Discretization/Polynomial degree=$2" \
@@ -80,7 +125,7 @@ for s in $series; do
         echo "FAIL: $s P$p r$r $solver did not converge ($dir.log)"
         status=1
       fi
-      if [ "$s" != free ] && [ "$(value contact_conditions_hold "$json")" != true ]; then
+      if [ "${s%free}" = "$s" ] && [ "$(value contact_conditions_hold "$json")" != true ]; then
         echo "FAIL: $s P$p r$r $solver: the contact conditions do not hold"
         status=1
       fi
@@ -90,7 +135,7 @@ for s in $series; do
       e=$(value potential_energy_J "$json")
       if [ "$solver" = direct ]; then
         wall0=$wall mb0=$mb u0=$u e0=$e
-      elif [ "$s" = free ]; then
+      elif [ "${s%free}" != "$s" ]; then
         awk -v a="$u" -v b="$u0" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }' || {
           echo "FAIL: $s P$p r$r: largest displacement $u mm with cg-amg, $u0 mm direct"
           status=1
@@ -98,7 +143,7 @@ for s in $series; do
       fi
       # The inverse's solves: the direct inverse's Newton steps and
       # Jacobian products; the forward's: Newton steps and linear solves.
-      if [ "$s" = inverse ]; then
+      if [ "${s%inverse}" != "$s" ]; then
         steps="$(value direct_inverse_newton_steps "$json") + $(value direct_inverse_jacobian_products "$json") products"
         solve=$(timer_seconds 'Direct inverse' "$dir.log")
       else

@@ -24,6 +24,11 @@ namespace RestShape
     constexpr unsigned int line_search_trials = 12;
     /// Armijo's sufficient decrease.
     constexpr double armijo = 1e-4;
+    /// Below this |R|/|f| (and above the tolerance) the contact forces of
+    /// the active nodes are known well enough to release those that pull:
+    /// waiting for the tolerance cost 1-3 steps per release round that
+    /// the release then throws away (doc/model.md, "Contact").
+    constexpr double release_check_residual = 1e-4;
 
     /// A change of the constraints or of the state (a release, a new
     /// active set, a return to the watchdog's kept state) starts a new
@@ -210,6 +215,17 @@ namespace RestShape
           stats.round_off =
             std::hypot(measure_round_off(), stats.linear_residual) / reference;
         floor = residual / reference <= round_off_margin * stats.round_off;
+      }
+    if (contact != nullptr && !set_changed && !floor &&
+        residual > tol * reference &&
+        residual <= release_check_residual * reference &&
+        contact->thaw_if_adhesive(system.raw_residual()))
+      {
+        start_new_history(stats);
+        pcout << "      active nodes pull on the obstacle: released before "
+                 "convergence"
+              << contact->progress_text() << std::endl;
+        return State::released;
       }
     if (!((residual <= tol * reference || floor) &&
           (contact == nullptr || (!set_changed && contact->is_satisfied()))))

@@ -20,7 +20,7 @@ namespace RestShape
       "Linear solver",
       "auto",
       Patterns::Selection("auto|direct|cg-amg"),
-      "auto: direct up to 20000 DoFs with linear elements and 50000 with "
+      "auto: direct up to 5000 DoFs with linear elements and 50000 with "
       "quadratic ones, or when some direction is held by no fixed label; "
       "cg-amg otherwise (the run says which it took). "
       "direct: sparse LU (MUMPS through Trilinos Amesos). "

@@ -31,11 +31,14 @@ namespace RestShape
   };
 
   /// Linear solver = auto: the direct solver up to this many DoFs, by the
-  /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md:
-  /// with linear elements CG + AMG overtakes it between 3.6k and 25k DoFs,
-  /// with and without contact; with quadratic ones the direct solver is
-  /// still 1.2-1.7 times faster at 25k DoFs, forward, contact and inverse).
-  constexpr unsigned int auto_direct_dofs_linear    = 20000;
+  /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md).
+  /// Linear elements: CG + AMG takes 0.98 (free), 0.88 (inverse) and 1.70
+  /// (contact) of the direct solver's time at 3.6k DoFs, 0.56, 0.76 and
+  /// 0.31 at 12k; the contact series, where CG + AMG's inexact steps cost
+  /// Newton steps, crosses last, near 5k. Quadratic elements: the direct
+  /// solver is 1.2-1.7 times faster at 25k DoFs (free, inverse, contact),
+  /// CG + AMG takes half its time at 91k (free).
+  constexpr unsigned int auto_direct_dofs_linear    = 5000;
   constexpr unsigned int auto_direct_dofs_quadratic = 50000;
 
   /// The limit of Linear solver = auto for elements of @p degree.
