@@ -110,9 +110,9 @@ namespace RestShape
   {
     if (parameters.solver.linear_solver != LinearSolverType::automatic)
       return parameters.solver.linear_solver;
-    const types::global_dof_index n = dof_handler_.n_dofs();
-    const unsigned int            limit =
-      auto_direct_dofs(parameters.discretization.degree);
+    const types::global_dof_index n      = dof_handler_.n_dofs();
+    const unsigned int            degree = parameters.discretization.degree;
+    const unsigned int limit = auto_direct_dofs(degree, parameters.obstacle);
     // A direction that no fixed label holds leaves the tangent singular
     // until contact or the support acts: CG cannot solve that, the direct
     // solver can.
@@ -124,10 +124,10 @@ namespace RestShape
     pcout << "Linear solver: auto chose "
           << (chosen == LinearSolverType::direct ? "direct" : "cg-amg")
           << " for " << n << " DoFs ("
-          << (all_held ?
-                "direct up to " + std::to_string(limit) + " for degree " +
-                  std::to_string(parameters.discretization.degree) :
-                std::string("a direction no fixed label holds"))
+          << (all_held ? "direct up to " + std::to_string(limit) +
+                           " for degree " + std::to_string(degree) +
+                           (parameters.obstacle ? " with an obstacle" : "") :
+                         std::string("a direction no fixed label holds"))
           << ")" << std::endl;
     return chosen;
   }

@@ -20,8 +20,9 @@ namespace RestShape
       "Linear solver",
       "auto",
       Patterns::Selection("auto|direct|cg-amg"),
-      "auto: direct up to 5000 DoFs with linear elements and 50000 with "
-      "quadratic ones, or when some direction is held by no fixed label; "
+      "auto: direct up to 4000 DoFs with linear elements (8000 with an "
+      "obstacle) and 50000 with quadratic ones, or when some direction is "
+      "held by no fixed label; "
       "cg-amg otherwise (the run says which it took). "
       "direct: sparse LU (MUMPS through Trilinos Amesos). "
       "cg-amg: conjugate gradients preconditioned by "

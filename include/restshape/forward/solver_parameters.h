@@ -31,21 +31,26 @@ namespace RestShape
   };
 
   /// Linear solver = auto: the direct solver up to this many DoFs, by the
-  /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md).
-  /// Linear elements: CG + AMG takes 0.98 (free), 0.88 (inverse) and 1.70
-  /// (contact) of the direct solver's time at 3.6k DoFs, 0.56, 0.76 and
-  /// 0.31 at 12k; the contact series, where CG + AMG's inexact steps cost
-  /// Newton steps, crosses last, near 5k. Quadratic elements: the direct
-  /// solver is 1.2-1.7 times faster at 25k DoFs (free, inverse, contact),
-  /// CG + AMG takes half its time at 91k (free).
-  constexpr unsigned int auto_direct_dofs_linear    = 5000;
-  constexpr unsigned int auto_direct_dofs_quadratic = 50000;
+  /// element degree and whether there is an obstacle (benchmarks/
+  /// linear_solver_auto, doc/benchmarks.md section 3). Linear elements:
+  /// CG + AMG takes 0.92 (free) and 0.71 (inverse) of the direct solver's
+  /// time at 3.6k DoFs but 3.4 times as long with contact (its inexact
+  /// steps change the active set: 179 Newton steps against 27); at 12k
+  /// it takes 0.65, 0.80 and 0.45 (contact). The contact series crosses
+  /// near 7.5k, the others below 3.6k. Quadratic elements: at 25k DoFs
+  /// 0.91 (free), 0.79 (contact), 1.20 (inverse); at 91k 0.51 (free).
+  constexpr unsigned int auto_direct_dofs_linear         = 4000;
+  constexpr unsigned int auto_direct_dofs_linear_contact = 8000;
+  constexpr unsigned int auto_direct_dofs_quadratic      = 50000;
 
-  /// The limit of Linear solver = auto for elements of @p degree.
+  /// The limit of Linear solver = auto for elements of @p degree, with or
+  /// without an obstacle (@p contact).
   constexpr unsigned int
-  auto_direct_dofs(const unsigned int degree)
+  auto_direct_dofs(const unsigned int degree, const bool contact)
   {
-    return degree == 1 ? auto_direct_dofs_linear : auto_direct_dofs_quadratic;
+    return degree > 1 ? auto_direct_dofs_quadratic :
+           contact    ? auto_direct_dofs_linear_contact :
+                        auto_direct_dofs_linear;
   }
 
   /// Solver/Watchdog steps (benchmarks/peer, doc/benchmarks.md).
