@@ -33,16 +33,17 @@ namespace RestShape
     // _gradients do, of the same scalar values: the same numbers.
     template <typename Result, typename Shape>
     void
-    accumulate(const std::vector<double>       &coefficients,
-               const std::vector<unsigned int> &component,
-               const std::vector<unsigned int> &scalar,
-               const unsigned int               n_points,
-               std::vector<Result>             &result,
-               const Shape                     &shape)
+    accumulate(const LocalField      &field,
+               const FEValuesBase<3> &fe_values,
+               std::vector<Result>   &result,
+               const Shape           &shape)
     {
+      const std::vector<unsigned int> &component = field.components();
+      const std::vector<unsigned int> &scalar    = field.scalar_functions();
+      const unsigned int               n_points = fe_values.n_quadrature_points;
       std::fill(result.begin(), result.begin() + n_points, Result());
-      for (unsigned int i = 0; i < coefficients.size(); ++i)
-        if (const double value = coefficients[i]; value != 0)
+      for (unsigned int i = 0; i < component.size(); ++i)
+        if (const double value = field[i]; value != 0)
           for (unsigned int q = 0; q < n_points; ++q)
             result[q][component[i]] += value * shape(scalar[i], q);
     }
@@ -52,10 +53,8 @@ namespace RestShape
   LocalField::values(const FEValuesBase<3>     &fe_values,
                      std::vector<Tensor<1, 3>> &result) const
   {
-    accumulate(coefficients,
-               component,
-               scalar,
-               fe_values.n_quadrature_points,
+    accumulate(*this,
+               fe_values,
                result,
                [&](const unsigned int k, const unsigned int q) {
                  return fe_values.shape_value(k, q);
@@ -66,10 +65,8 @@ namespace RestShape
   LocalField::gradients(const FEValuesBase<3>     &fe_values,
                         std::vector<Tensor<2, 3>> &result) const
   {
-    accumulate(coefficients,
-               component,
-               scalar,
-               fe_values.n_quadrature_points,
+    accumulate(*this,
+               fe_values,
                result,
                [&](const unsigned int k, const unsigned int q) {
                  return fe_values.shape_grad(k, q);

@@ -27,7 +27,7 @@ namespace RestShape
     /// Below this |R|/|f| (and above the tolerance) the contact forces of
     /// the active nodes are known well enough to release those that pull:
     /// waiting for the tolerance cost 1-3 steps per release round that
-    /// the release then throws away (doc/model.md, "Contact").
+    /// the release then throws away (doc/contact.md).
     constexpr double release_check_residual = 1e-4;
 
     /// A change of the constraints or of the state (a release, a new
@@ -216,17 +216,20 @@ namespace RestShape
             std::hypot(measure_round_off(), stats.linear_residual) / reference;
         floor = residual / reference <= round_off_margin * stats.round_off;
       }
+    // Releases the active nodes that pull on the obstacle, if any.
+    const auto release_pulling = [&](const std::string &when) {
+      if (!contact->thaw_if_adhesive(system.raw_residual()))
+        return false;
+      start_new_history(stats);
+      pcout << "      active nodes pull on the obstacle: released" << when
+            << contact->progress_text() << std::endl;
+      return true;
+    };
     if (contact != nullptr && !set_changed && !floor &&
         residual > tol * reference &&
         residual <= release_check_residual * reference &&
-        contact->thaw_if_adhesive(system.raw_residual()))
-      {
-        start_new_history(stats);
-        pcout << "      active nodes pull on the obstacle: released before "
-                 "convergence"
-              << contact->progress_text() << std::endl;
-        return State::released;
-      }
+        release_pulling(" before convergence"))
+      return State::released;
     if (!((residual <= tol * reference || floor) &&
           (contact == nullptr || (!set_changed && contact->is_satisfied()))))
       return State::iterate;
@@ -242,13 +245,8 @@ namespace RestShape
             << std::endl;
     if (contact == nullptr)
       return State::converged;
-    if (contact->thaw_if_adhesive(system.raw_residual()))
-      {
-        start_new_history(stats);
-        pcout << "      active nodes pull on the obstacle: released"
-              << contact->progress_text() << std::endl;
-        return State::released;
-      }
+    if (release_pulling(""))
+      return State::released;
     if (contact_conditions_hold(stats, reference, corrections))
       return State::converged;
     start_new_history(stats);
