@@ -1,10 +1,8 @@
 // DirectInverse: Jacobian-free Newton on the equilibrium at the target
 // with the rest shape as unknown (see direct_inverse.h).
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
-
 #include <restshape/base/input_error.h>
 #include <restshape/inverse/direct_inverse.h>
+#include <restshape/inverse/flexible_gmres.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,10 +28,43 @@ namespace RestShape
     constexpr double slow_progress = 0.9;
     /// Load steps that may fail before the direct inverse gives up.
     constexpr unsigned int max_failed_load_steps = 3;
-    /// GMRES reduces the linearised residual by this (inexact Newton), in
-    /// at most this many iterations.
-    constexpr double       gmres_reduction = 1e-4;
-    constexpr unsigned int max_gmres_steps = 40;
+    /// GMRES reduces the linearised residual by the forcing term eta
+    /// (inexact Newton; Eisenstat and Walker's choice 2: eta = gamma
+    /// (|R_k| / |R_k-1|)^2, kept up by gamma eta_k-1^2 where that exceeds
+    /// forcing_safeguard, at most max_forcing, and never below what reaches
+    /// the tolerance: no oversolving far from the solution), in at most
+    /// max_gmres_steps iterations.
+    constexpr double       max_forcing       = 0.5;
+    constexpr double       forcing_gamma     = 0.9;
+    constexpr double       forcing_safeguard = 0.1;
+    constexpr unsigned int max_gmres_steps   = 40;
+    /// With CG + AMG the preconditioner is an inner CG solve to this
+    /// relative tolerance (FGMRES tolerates inexact inner solves; looser
+    /// ones take more outer products, tighter ones more CG iterations).
+    constexpr double inner_tolerance = 1e-2;
+
+    /// The next forcing term after a Newton step that took the relative
+    /// residual from @p last to @p now, with the forcing term @p eta
+    /// (max_forcing at the first step); @p tolerance is Newton's.
+    double
+    forcing_term(const double eta,
+                 const double last,
+                 const double now,
+                 const double tolerance)
+    {
+      double next = max_forcing;
+      if (last < std::numeric_limits<double>::max())
+        {
+          const double ratio = now / last;
+          next               = forcing_gamma * ratio * ratio;
+          const double kept  = forcing_gamma * eta * eta;
+          if (kept > forcing_safeguard)
+            next = std::max(next, kept);
+        }
+      // Half the tolerance is enough: the linear model need not be
+      // solved further than the residual Newton stops at.
+      return std::min(max_forcing, std::max(next, 0.5 * tolerance / now));
+    }
     /// Finite-difference step: the largest nodal perturbation, as a
     /// fraction of the body's size.
     constexpr double fd_step = 1e-7;
@@ -75,7 +106,7 @@ namespace RestShape
     void
     vmult(VectorType &dst, const VectorType &src) const
     {
-      forward.solve_with_tangent(dst, src);
+      forward.solve_with_tangent(dst, src, inner_tolerance);
     }
   };
 
@@ -162,15 +193,14 @@ namespace RestShape
     if (!residual(w, r))
       return false;
     unsigned int slow = 0;
-    double       last = std::numeric_limits<double>::max();
+    double       last = std::numeric_limits<double>::max(), eta = max_forcing;
     for (unsigned int step = 0;; ++step)
       {
         result.relative_residual = r.l2_norm() / reference;
-        pcout << "  Direct inverse, load " << s << ", Newton " << step
-              << ": |R|/|R0| = " << result.relative_residual << std::endl;
         if (result.relative_residual <= tolerance)
           return true;
         slow = result.relative_residual > slow_progress * last ? slow + 1 : 0;
+        eta  = forcing_term(eta, last, result.relative_residual, tolerance);
         last = result.relative_residual;
         if (step == max_newton_steps || slow == 2)
           {
@@ -182,47 +212,42 @@ namespace RestShape
                             std::to_string(max_newton_steps) + " Newton steps";
             return false;
           }
-        VectorType delta = newton_direction(w, r);
+        const auto [delta, products] = newton_direction(w, r, eta);
         if (!line_search(w, r, delta))
           return false;
         ++result.newton_steps;
+        pcout << "  Direct inverse, load " << s << ", Newton " << step + 1
+              << ": |R|/|R0| " << last << " -> " << r.l2_norm() / reference
+              << ", GMRES " << products << " its to " << eta << " |R|"
+              << std::endl;
       }
   }
 
-  VectorType
-  DirectInverse::newton_direction(const VectorType &w, const VectorType &r)
+  std::pair<VectorType, unsigned int>
+  DirectInverse::newton_direction(const VectorType &w,
+                                  const VectorType &r,
+                                  const double      eta)
   {
     VectorType delta = forward.zero_vector(), minus_r = r;
     minus_r *= -1;
     forward.set_state(d, w, load);
     forward.prepare_consistent_tangent();
     ++result.factorisations;
-    SolverControl        control(max_gmres_steps,
-                          gmres_reduction * r.l2_norm(),
-                          false,
-                          false);
     const Jacobian       jacobian{*this, w, r, forward.zero_vector()};
     const Preconditioner preconditioner{forward};
-    try
-      {
-        // With CG + AMG the preconditioner is an inexact inner solve,
-        // which changes from one application to the next: flexible GMRES.
-        if (forward.tangent_solves_are_exact())
-          SolverGMRES<VectorType>(
-            control,
-            SolverGMRES<VectorType>::AdditionalData(max_gmres_steps + 2, true))
-            .solve(jacobian, delta, minus_r, preconditioner);
-        else
-          SolverFGMRES<VectorType>(control,
-                                   SolverFGMRES<VectorType>::AdditionalData(
-                                     max_gmres_steps + 2))
-            .solve(jacobian, delta, minus_r, preconditioner);
-      }
-    catch (const SolverControl::NoConvergence &)
-      {
-        // The best iterate so far; the line search judges it.
-      }
-    return delta;
+    // If GMRES stops at max_gmres_steps, the line search judges the best
+    // iterate so far.
+    const FlexibleGmresResult gmres =
+      FlexibleGmres(max_gmres_steps)
+        .solve([&](VectorType       &dst,
+                   const VectorType &src) { jacobian.vmult(dst, src); },
+               [&](VectorType &dst, const VectorType &src) {
+                 preconditioner.vmult(dst, src);
+               },
+               delta,
+               minus_r,
+               eta * r.l2_norm());
+    return {delta, gmres.iterations};
   }
 
   bool

@@ -8,6 +8,7 @@
 #include <restshape/forward/forward_problem.h>
 
 #include <string>
+#include <utility>
 
 namespace RestShape
 {
@@ -28,10 +29,12 @@ namespace RestShape
    * R(d = 0; w) = 0 (or at the target of set_target()), R the forward residual
    * (external minus internal forces, with every load, support and constraint of
    * the forward problem; contact is not part of it). Newton's method in w,
-   * Jacobian-free: the product with dR/dw is a finite difference of two
-   * residual assemblies, solved by right-preconditioned GMRES with the
-   * factorised forward tangent dR/dd (for small strains dR/dw = -dR/dd,
-   * so GMRES needs a few iterations); a backtracking line search on |R|
+   * Jacobian-free: the product with dR/dw is a finite difference (one
+   * residual assembly), solved by right-preconditioned flexible GMRES
+   * (FlexibleGmres) with the forward tangent dR/dd (factorised, or an
+   * inner CG + AMG solve; for small strains dR/dw = -dR/dd, so GMRES needs
+   * a few iterations) only as far as Eisenstat and Walker's forcing term
+   * asks (loosely far from the solution); a backtracking line search on |R|
    * that never accepts a rest shape with an inverted cell; continuation in
    * the load (a failed increment is halved; after three failed increments
    * it gives up). A load step fails after 15 Newton steps or two in a row
@@ -69,10 +72,11 @@ namespace RestShape
     /// @p w until |R| <= @p tolerance |R0|; false (result.failure) if not.
     bool
     newton(VectorType &w, const double tolerance, const double s);
-    /// The Newton update at @p w with residual @p r: GMRES on
-    /// J delta = -r, right-preconditioned by the forward tangent.
-    VectorType
-    newton_direction(const VectorType &w, const VectorType &r);
+    /// The Newton update at @p w with residual @p r: flexible GMRES on
+    /// J delta = -r to |J delta + r| <= @p eta |r|, right-preconditioned
+    /// by the forward tangent; with the number of GMRES iterations.
+    std::pair<VectorType, unsigned int>
+    newton_direction(const VectorType &w, const VectorType &r, double eta);
     /// Backtrack along @p delta until |R| decreases (Armijo) with no
     /// inverted cell; updates @p w and @p r.
     bool
