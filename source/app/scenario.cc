@@ -319,9 +319,9 @@ namespace RestShape
 
     pcout << "  pre-stressed model: the scene's loads -> the changed loads"
           << std::endl;
-    const SolveStatistics s1 = forward.solve(changed, w_rest);
-    if (!s1.converged)
-      fail(s1, "pre-stressed");
+    const LoadState       change = difference(changed, scene);
+    const SolveStatistics s1 =
+      solve_pre_stressed(changed, change, w_rest, fail);
     const VectorType d1 = forward.owned_copy(forward.displacement());
     VectorType       u1 = d1;
     u1 -= d_eq;
@@ -345,31 +345,9 @@ namespace RestShape
     pcout << "  stress-free model (rest shape = the pre-stressed equilibrium, "
              "the same contact set): the change alone"
           << std::endl;
-    const LoadState change = difference(changed, scene);
-    SolveStatistics s2;
-    VectorType      u2 = u1;
-    u2                 = 0;
-    if (is_zero(change))
-      {
-        // Stress-free under no load, it stays where it is: an exact
-        // solution, which a solve would only blur with its contact
-        // tolerances (nodes within the gap tolerance pushed onto the
-        // skull, against a load of 0 N as the reference).
-        s2.converged = true;
-        pcout << "      no change of load: the stress-free model stays"
-              << std::endl;
-      }
-    else
-      {
-        forward.set_state(d_eq, d_eq, LoadState());
-        if (contact != nullptr)
-          contact->set_state(start_set);
-        s2 = forward.solve(change, d_eq);
-        if (!s2.converged)
-          fail(s2, "stress-free");
-        u2 = forward.owned_copy(forward.displacement());
-        u2 -= d_eq;
-      }
+    VectorType            u2 = u1;
+    const SolveStatistics s2 =
+      solve_stress_free(change, d_eq, start_set, fail, u2);
 
     // The pre-stressed model's end state is the one written.
     forward.set_state(d1, w_rest, changed);
@@ -386,6 +364,62 @@ namespace RestShape
         contact->set_state(equilibrium_set);
       }
     forward.set_state(d_eq, w_rest, scene);
+  }
+
+  SolveStatistics
+  Scenario::solve_pre_stressed(const LoadState  &changed,
+                               const LoadState  &change,
+                               const VectorType &w_rest,
+                               const Failure    &fail)
+  {
+    SolveStatistics s;
+    if (is_zero(change) && !scenario.craniotomy.defined())
+      {
+        // Nothing changes: the equilibrium stays, exactly (a contact solve
+        // from it could move it within the gap tolerance: the nodes it
+        // released for pulling are activated again).
+        // Its residual (what the reductions and contact forces read) is
+        // assembled anew: an earlier scenario's solve left its own.
+        s.converged = forward.evaluate_residual();
+        pcout << "      no change of load: the pre-stressed model stays"
+              << std::endl;
+        return s;
+      }
+    s = forward.solve(changed, w_rest);
+    if (!s.converged)
+      fail(s, "pre-stressed");
+    return s;
+  }
+
+  SolveStatistics
+  Scenario::solve_stress_free(const LoadState             &change,
+                              const VectorType            &d_eq,
+                              const ContactProblem::State &start_set,
+                              const Failure               &fail,
+                              VectorType                  &shift)
+  {
+    SolveStatistics s;
+    shift = 0;
+    if (is_zero(change))
+      {
+        // Stress-free under no load, it stays where it is: an exact
+        // solution, which a solve would only blur with its contact
+        // tolerances (nodes within the gap tolerance pushed onto the
+        // skull, against a load of 0 N as the reference).
+        s.converged = true;
+        pcout << "      no change of load: the stress-free model stays"
+              << std::endl;
+        return s;
+      }
+    forward.set_state(d_eq, d_eq, LoadState());
+    if (contact != nullptr)
+      contact->set_state(start_set);
+    s = forward.solve(change, d_eq);
+    if (!s.converged)
+      fail(s, "stress-free");
+    shift = forward.owned_copy(forward.displacement());
+    shift -= d_eq;
+    return s;
   }
 
   void

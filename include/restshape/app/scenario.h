@@ -85,6 +85,23 @@ namespace RestShape
     run(const Failure &fail);
 
   private:
+    /// The pre-stressed model from its equilibrium (displacement @p w_rest
+    /// from the rest shape) under @p changed; with no change and no
+    /// opening it stays. Calls @p fail if the solve fails.
+    SolveStatistics
+    solve_pre_stressed(const LoadState  &changed,
+                       const LoadState  &change,
+                       const VectorType &w_rest,
+                       const Failure    &fail);
+    /// The stress-free model, resting at the equilibrium @p d_eq with the
+    /// contact set @p start_set, under the change alone: its shift from
+    /// @p d_eq into @p shift. With no change it stays (shift 0).
+    SolveStatistics
+    solve_stress_free(const LoadState             &change,
+                      const VectorType            &d_eq,
+                      const ContactProblem::State &start_set,
+                      const Failure               &fail,
+                      VectorType                  &shift);
     /// The CSV, the VTU (with the pre-stressed model's @p contact_fields),
     /// the summary and the screen table.
     void
