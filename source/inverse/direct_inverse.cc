@@ -168,9 +168,10 @@ namespace RestShape
         const bool final = (s == 1);
         if (newton(w, final ? final_reduction : step_tolerance, s))
           {
-            rest      = w;
-            done      = s;
-            increment = std::min(2 * increment, 1.);
+            rest           = w;
+            done           = s;
+            increment      = std::min(2 * increment, 1.);
+            result.failure = ""; // of an earlier, halved load step
             continue;
           }
         increment = (s - done) / 2;
@@ -181,6 +182,8 @@ namespace RestShape
                               " of the load";
             return result;
           }
+        pcout << "  Direct inverse, load " << s << " failed (" << result.failure
+              << "); next load " << done + increment << std::endl;
       }
     result.converged = true;
     return result;
