@@ -280,7 +280,21 @@ namespace RestShape
       pcout << "  Direct inverse: at the image, without contact (the fixed "
                "point then aims at the admissible target)"
             << std::endl;
-    rest = forward.owned_copy(initial_rest);
+    rest                     = forward.owned_copy(initial_rest);
+    const std::string unheld = directions_only_contact_holds();
+    if (!carries && !unheld.empty())
+      {
+        result.direct         = DirectInverseResult();
+        result.direct.failure = "skipped: no fixed label or elastic support "
+                                "holds the body in " +
+                                unheld +
+                                " (only the obstacle does, which the direct "
+                                "inverse does not model: its tangent is "
+                                "singular there)";
+        pcout << "  Direct inverse: " << result.direct.failure
+              << "; the fixed point starts from the target" << std::endl;
+        return false;
+      }
     // Aiming at the admissible target, start stress-free there.
     if (carries && rest.linfty_norm() == 0)
       rest = target_shift;
@@ -302,6 +316,20 @@ namespace RestShape
                             "; the fixed point starts from the target")
           << std::endl;
     return r.converged;
+  }
+
+  std::string
+  InverseProblem::directions_only_contact_holds() const
+  {
+    if (contact == nullptr ||
+        forward.scene_parameters().boundary.support_stiffness > 0)
+      return "";
+    const std::array<bool, 3> held = forward.fixed_components();
+    std::string               unheld;
+    for (unsigned int c = 0; c < 3; ++c)
+      if (!held[c])
+        unheld += std::string(unheld.empty() ? "" : ", ") + "xyz"[c];
+    return unheld;
   }
 
   std::string

@@ -163,12 +163,18 @@ namespace RestShape
     /// Method = direct: the direct inverse from @p initial_rest into
     /// @p rest (its figures in @p result.direct), for the image without
     /// contact even where the image crosses the obstacle; whether it
-    /// converged.
+    /// converged. Skipped (false) where only the obstacle holds the body
+    /// in some direction (directions_only_contact_holds()).
     bool
     direct_inverse(const VectorType &initial_rest,
                    const LoadState  &load,
                    InverseResult    &result,
                    VectorType       &rest);
+    /// The displacement components ("x, z") in which no node is fixed and
+    /// no elastic support acts, where there is an obstacle: without
+    /// contact the tangent is singular in them. Empty if none.
+    std::string
+    directions_only_contact_holds() const;
     /// The next rest shape from the iterate @p w and its residual @p f:
     /// Anderson's (if @p accelerate) or the plain w + f, shortened until
     /// no cell inverts. Returns "" or why there is none.
