@@ -345,7 +345,7 @@ namespace RestShape
     pcout << "  stress-free model (rest shape = the pre-stressed equilibrium, "
              "the same contact set): the change alone"
           << std::endl;
-    VectorType            u2 = u1;
+    VectorType            u2 = forward.zero_vector();
     const SolveStatistics s2 =
       solve_stress_free(change, d_eq, start_set, fail, u2);
 

@@ -73,42 +73,25 @@ namespace RestShape
     constexpr double       armijo       = 1e-4;
   } // namespace
 
-  /// J v = (R(w + e v) - R(w)) / e, one residual assembly.
-  struct DirectInverse::Jacobian
+  void
+  DirectInverse::jacobian_product(const VectorType &w,
+                                  const VectorType &r,
+                                  const VectorType &v,
+                                  VectorType       &trial,
+                                  VectorType       &product)
   {
-    DirectInverse     &self;
-    const VectorType  &w, &r;
-    mutable VectorType trial;
-
-    void
-    vmult(VectorType &dst, const VectorType &src) const
-    {
-      const double norm = src.linfty_norm();
-      dst               = 0;
-      if (norm == 0)
-        return;
-      const double e = fd_step * self.forward.mesh().diameter() / norm;
-      trial          = w;
-      trial.add(e, src);
-      self.residual(trial, dst);
-      dst -= r;
-      dst /= e;
-      ++self.result.jacobian_products;
-    }
-  };
-
-  /// The factorised forward tangent dR/dd (dR/dw = -dR/dd for small
-  /// strains, and R's sign makes the product with dR/dw near identity).
-  struct DirectInverse::Preconditioner
-  {
-    ForwardProblem &forward;
-
-    void
-    vmult(VectorType &dst, const VectorType &src) const
-    {
-      forward.solve_with_tangent(dst, src, inner_tolerance);
-    }
-  };
+    const double norm = v.linfty_norm();
+    product           = 0;
+    if (norm == 0)
+      return;
+    const double e = fd_step * forward.mesh().diameter() / norm;
+    trial          = w;
+    trial.add(e, v);
+    residual(trial, product);
+    product -= r;
+    product /= e;
+    ++result.jacobian_products;
+  }
 
   DirectInverse::DirectInverse(ForwardProblem     &forward,
                                ConditionalOStream &pcout)
@@ -236,20 +219,23 @@ namespace RestShape
     forward.set_state(d, w, load);
     forward.prepare_consistent_tangent();
     ++result.factorisations;
-    const Jacobian       jacobian{*this, w, r, forward.zero_vector()};
-    const Preconditioner preconditioner{forward};
-    // If GMRES stops at max_gmres_steps, the line search judges the best
-    // iterate so far.
+    // Right-preconditioned by the forward tangent dR/dd (dR/dw = -dR/dd
+    // for small strains, and R's sign makes the product with dR/dw near
+    // identity): factorised, or an inner CG + AMG solve. If GMRES stops at
+    // max_gmres_steps, the line search judges the best iterate so far.
+    VectorType                trial = forward.zero_vector();
     const FlexibleGmresResult gmres =
       FlexibleGmres(max_gmres_steps)
-        .solve([&](VectorType       &dst,
-                   const VectorType &src) { jacobian.vmult(dst, src); },
-               [&](VectorType &dst, const VectorType &src) {
-                 preconditioner.vmult(dst, src);
-               },
-               delta,
-               minus_r,
-               eta * r.l2_norm());
+        .solve(
+          [&](VectorType &dst, const VectorType &src) {
+            jacobian_product(w, r, src, trial, dst);
+          },
+          [&](VectorType &dst, const VectorType &src) {
+            forward.solve_with_tangent(dst, src, inner_tolerance);
+          },
+          delta,
+          minus_r,
+          eta * r.l2_norm());
     return {delta, gmres.iterations};
   }
 

@@ -275,13 +275,8 @@ namespace RestShape
     // which the direct inverse does not model: it then solves for the
     // image without contact, and the fixed point takes its rest shape on
     // to the admissible target.
-    const bool carries = result.carried.share > 0;
-    if (target_shift.linfty_norm() > 0 && !carries)
-      pcout << "  Direct inverse: at the image, without contact (the fixed "
-               "point then aims at the admissible target)"
-            << std::endl;
-    rest                     = forward.owned_copy(initial_rest);
-    const std::string unheld = directions_only_contact_holds();
+    const bool        carries = result.carried.share > 0;
+    const std::string unheld  = directions_only_contact_holds();
     if (!carries && !unheld.empty())
       {
         result.direct         = DirectInverseResult();
@@ -295,6 +290,11 @@ namespace RestShape
               << "; the fixed point starts from the target" << std::endl;
         return false;
       }
+    if (target_shift.linfty_norm() > 0 && !carries)
+      pcout << "  Direct inverse: at the image, without contact (the fixed "
+               "point then aims at the admissible target)"
+            << std::endl;
+    rest = forward.owned_copy(initial_rest);
     // Aiming at the admissible target, start stress-free there.
     if (carries && rest.linfty_norm() == 0)
       rest = target_shift;

@@ -7,7 +7,6 @@
 // tolerance: with one iteration less it would not have.
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <restshape/base/mpi_start.h>
 #include <restshape/inverse/flexible_gmres.h>
@@ -16,6 +15,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "banded_matrix.h"
 #include "checks.h"
 
 using namespace dealii;
@@ -96,13 +96,9 @@ main(int argc, char **argv)
   prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const IndexSet                   all = complete_index_set(n);
-  DynamicSparsityPattern           pattern(n, n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = (i < 1 ? 0 : i - 1); j < std::min(n, i + 2); ++j)
-      pattern.add(i, j);
-  MatrixType A, D;
-  A.reinit(all, all, pattern, MPI_COMM_WORLD);
-  D.reinit(all, all, pattern, MPI_COMM_WORLD);
+  MatrixType                       A, D;
+  checks::reinit_banded(A, n, 1);
+  checks::reinit_banded(D, n, 1);
   for (unsigned int i = 0; i < n; ++i)
     {
       A.set(i, i, 2.5 + 0.01 * i);

@@ -8,7 +8,6 @@
 // no NaN).
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_start.h>
@@ -16,6 +15,7 @@
 
 #include <cmath>
 
+#include "banded_matrix.h"
 #include "checks.h"
 
 using namespace dealii;
@@ -69,12 +69,8 @@ main(int argc, char **argv)
   prefer_fast_singleton_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const IndexSet                   all = complete_index_set(n);
-  DynamicSparsityPattern           pattern(n, n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = (i < 2 ? 0 : i - 2); j < std::min(n, i + 3); ++j)
-      pattern.add(i, j);
-  MatrixType A;
-  A.reinit(all, all, pattern, MPI_COMM_WORLD);
+  MatrixType                       A;
+  checks::reinit_banded(A, n, 2);
   VectorType x_true(all, MPI_COMM_WORLD);
   for (unsigned int i = 0; i < n; ++i)
     x_true[i] = std::sin(0.1 * i) + 0.01 * i;

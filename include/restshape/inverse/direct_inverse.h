@@ -62,8 +62,14 @@ namespace RestShape
                const VectorType &obstacle_force);
 
   private:
-    struct Jacobian;
-    struct Preconditioner;
+    /// J @p v = (R(w + e v) - R(w)) / e into @p product, one residual
+    /// assembly (@p r = R(w); @p trial: work space); counts the product.
+    void
+    jacobian_product(const VectorType &w,
+                     const VectorType &r,
+                     const VectorType &v,
+                     VectorType       &trial,
+                     VectorType       &product);
 
     /// R(d; w) at @p w (owned) into @p r; false if a cell inverts.
     bool
