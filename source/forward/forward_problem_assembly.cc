@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/filtered_iterator.h>
 
+#include <restshape/forward/elastic_cell.h>
 #include <restshape/forward/forward_problem.h>
 
 namespace RestShape
@@ -30,8 +31,7 @@ namespace RestShape
       , d_cell(fe)
       , w_cell(fe)
       , faces(mapping, fe, face_quadrature)
-      , b(fe.n_dofs_per_cell())
-      , v(fe.n_dofs_per_cell())
+      , elastic(fe)
     {}
 
     ScratchData(const ScratchData &other)
@@ -41,12 +41,11 @@ namespace RestShape
                     other.faces.fe_face_values.get_quadrature())
     {}
 
-    FEValues<3>               fe_values; // of the scalar base element
-    std::vector<Tensor2>      grad_d, grad_w;
-    LocalField                d_cell, w_cell; // d and w on the cell
-    FaceScratch               faces;          // of the load terms
-    std::vector<Tensor<1, 3>> b; // gradient w.r.t. the rest configuration
-    std::vector<Tensor2>      v; // A : (e_c (x) b_j), per shape function j
+    FEValues<3>          fe_values; // of the scalar base element
+    std::vector<Tensor2> grad_d, grad_w;
+    LocalField           d_cell, w_cell; // d and w on the cell
+    FaceScratch          faces;          // of the load terms
+    ElasticCell          elastic;        // the law's terms
   };
 
   struct ForwardProblem::CopyData
@@ -81,29 +80,20 @@ namespace RestShape
     CopyData                                           &copy,
     const Assemble                                      what) const
   {
-    const unsigned int n_dofs     = fe_.n_dofs_per_cell();
-    const bool         matrix     = (what == Assemble::residual_and_matrix);
-    const bool         magnitudes = (what == Assemble::residual_and_magnitudes);
-    FEValues<3>       &fe_values  = scratch.fe_values;
+    const bool   matrix     = (what == Assemble::residual_and_matrix);
+    const bool   magnitudes = (what == Assemble::residual_and_magnitudes);
+    FEValues<3> &fe_values  = scratch.fe_values;
     // As a cell of the mesh: the DoFHandler's cell is of the vector element.
     fe_values.reinit(static_cast<Triangulation<3>::cell_iterator>(cell));
     cell->get_dof_indices(copy.dofs);
-    copy.cell_index    = cell->active_cell_index();
-    copy.cell_rhs      = 0;
-    copy.cell_external = 0;
-    if (magnitudes)
-      copy.cell_magnitude = 0;
-    if (matrix)
-      copy.cell_matrix = 0;
-    copy.valid = true;
+    copy.cell_index = cell->active_cell_index();
+    copy.valid      = true;
 
     scratch.d_cell.gather(d_buffer, copy.dofs);
     scratch.w_cell.gather(w_buffer, copy.dofs);
     scratch.d_cell.gradients(fe_values, scratch.grad_d);
     scratch.w_cell.gradients(fe_values, scratch.grad_w);
     scratch.faces.forget();
-    const std::vector<unsigned int> &component = scratch.d_cell.components();
-    const std::vector<unsigned int> &scalar = scratch.d_cell.scalar_functions();
 
     const Label        label = cell->material_id();
     const MaterialLaw &law   = material_table.law(label);
@@ -114,72 +104,42 @@ namespace RestShape
       body_force(*cell, cell->center(), current_load);
     const Tensor2 I = unit_symmetric_tensor<3>();
 
-    Tensor2 P;
+    ElasticCell &elastic = scratch.elastic;
+    elastic.reinit(magnitudes);
     Tensor4 A;
     double  W   = 0;
     copy.energy = 0;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         // Rest configuration X_rest = X + w: dX_rest = G dX.
-        const Tensor2 G     = I + scratch.grad_w[q];
-        const double  det_G = determinant(G);
-        const Tensor2 G_inv = invert(G);
-        const Tensor2 F     = (I + scratch.grad_d[q]) * G_inv;
+        const Tensor2      G     = I + scratch.grad_w[q];
+        const double       det_G = determinant(G);
+        const Tensor2      G_inv = invert(G);
+        const Tensor2      F     = (I + scratch.grad_d[q]) * G_inv;
+        ElasticCell::Point p;
         if (!(det_G > 0) ||
-            !law.evaluate(F, P, matrix ? &A : nullptr, tangent_type, &W))
+            !law.evaluate(F, p.P, matrix ? &A : nullptr, tangent_type, &W))
           {
             copy.valid  = false;
             copy.center = cell->center();
             copy.label  = label;
             return;
           }
-        const double       JxW     = fe_values.JxW(q);
-        const double       dV_rest = det_G * JxW;
-        const Tensor<1, 3> f_body =
+        p.q       = q;
+        p.G_inv_T = transpose(G_inv);
+        p.A       = matrix ? &A : nullptr;
+        p.JxW     = fe_values.JxW(q);
+        p.dV_rest = det_G * p.JxW;
+        p.f_body =
           varies ?
             body_force(*cell, fe_values.quadrature_point(q), current_load) :
             cell_body_force;
-        copy.energy += W * dV_rest;
-        const Tensor2 G_inv_T = transpose(G_inv);
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const unsigned int ci = component[i];
-            const unsigned int si = scalar[i];
-            scratch.b[i]          = G_inv_T * fe_values.shape_grad(si, q);
-            const double f_ext =
-              fe_values.shape_value(si, q) * f_body[ci] * JxW;
-            const double f_int = (P[ci] * scratch.b[i]) * dV_rest;
-            copy.cell_external(i) += f_ext;
-            copy.cell_rhs(i) += f_ext - f_int;
-            if (magnitudes)
-              copy.cell_magnitude(i) += std::abs(f_ext) + std::abs(f_int);
-          }
-        if (!matrix)
-          continue;
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          {
-            const unsigned int cj = component[j];
-            Tensor2           &v  = scratch.v[j];
-            for (unsigned int c = 0; c < 3; ++c)
-              for (unsigned int K = 0; K < 3; ++K)
-                {
-                  double sum = 0;
-                  for (unsigned int L = 0; L < 3; ++L)
-                    sum += A[c][K][cj][L] * scratch.b[j][L];
-                  v[c][K] = sum * dV_rest;
-                }
-          }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const unsigned int ci = component[i];
-            for (unsigned int j = 0; j <= i; ++j)
-              copy.cell_matrix(i, j) += scratch.v[j][ci] * scratch.b[i];
-          }
+        copy.energy += W * p.dV_rest;
+        elastic.add(fe_values, p);
       }
+    elastic.vectors(copy.cell_rhs, copy.cell_external, copy.cell_magnitude);
     if (matrix)
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        for (unsigned int j = i + 1; j < n_dofs; ++j)
-          copy.cell_matrix(i, j) = copy.cell_matrix(j, i);
+      elastic.matrix(copy.cell_matrix);
 
     assemble_load_terms(cell, scratch, copy, matrix);
   }

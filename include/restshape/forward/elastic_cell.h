@@ -1,0 +1,85 @@
+// The material law's part of one cell's residual and tangent, summed over
+// the cell's quadrature points by the scalar shape functions of the
+// element (a system of 3 copies of one scalar element): each scalar
+// function's gradient is transformed once per point, not once per vector
+// component, and the tangent is summed in 3 x 3 blocks, one per pair of
+// scalar functions, in flat arrays the compiler can vectorise. Each entry
+// gets the same products, added in the same order, as a loop over the
+// vector element's shape functions: the same numbers.
+#ifndef restshape_forward_elastic_cell_h
+#define restshape_forward_elastic_cell_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace RestShape
+{
+  class ElasticCell
+  {
+  public:
+    /// For the shape functions of @p fe (3 copies of one scalar element).
+    explicit ElasticCell(const dealii::FiniteElement<3> &fe);
+
+    /// What one quadrature point contributes.
+    struct Point
+    {
+      unsigned int                q;       // its index in the FEValues
+      dealii::Tensor<2, 3>        G_inv_T; // (d X_rest / d X)^-T
+      dealii::Tensor<2, 3>        P;       // first Piola-Kirchhoff stress
+      const dealii::Tensor<4, 3> *A;       // dP/dF, or null (no tangent)
+      double                      JxW;     // mesh volume weight (m^3)
+      double                      dV_rest; // rest volume weight (m^3)
+      dealii::Tensor<1, 3>        f_body;  // body force (N/m^3 of mesh)
+    };
+
+    /// Start a cell; @p magnitudes: also sum |f_ext| + |f_int|.
+    void
+    reinit(const bool magnitudes);
+
+    /// Add the point @p p, @p fe_values being of the scalar element.
+    void
+    add(const dealii::FEValues<3> &fe_values, const Point &p);
+
+    /// The cell's f_ext - f_int, f_ext and, if asked at reinit(), the
+    /// magnitudes, by the vector element's shape functions.
+    void
+    vectors(dealii::Vector<double> &rhs,
+            dealii::Vector<double> &external,
+            dealii::Vector<double> &magnitude) const;
+
+    /// The cell's tangent -d(f_ext - f_int)/du (symmetric; the body force
+    /// does not depend on u), overwriting @p matrix.
+    void
+    matrix(dealii::FullMatrix<double> &matrix) const;
+
+  private:
+    void
+    add_residual(const dealii::FEValues<3> &fe_values, const Point &p);
+    void
+    add_tangent(const Point &p);
+
+    unsigned int n_scalar;
+    /// The vector element's shape function of (component c, scalar k):
+    /// index[c * n_scalar + k].
+    std::vector<unsigned int> index;
+    bool                      magnitudes = false;
+    bool                      first      = true; // no point added yet
+    /// Per scalar function k: its rest-configuration gradient b[3 k + L].
+    std::vector<double> b;
+    /// Per scalar function k: v[30 k + 10 K + 3 cj + ci] =
+    /// dV_rest sum_L A[ci][K][cj][L] b_k[L] (10 entries per K, 9 used).
+    std::vector<double> v;
+    /// Per pair k >= l of scalar functions, 10 entries [3 cj + ci] (9 used):
+    /// the tangent's entry of (ci, k), (cj, l).
+    std::vector<double> blocks;
+    /// By (component c, scalar k), c * n_scalar + k.
+    std::vector<double> rhs, external, magnitude;
+  };
+} // namespace RestShape
+
+#endif
