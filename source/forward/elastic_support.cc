@@ -1,6 +1,8 @@
 #include <restshape/forward/elastic_support.h>
 #include <restshape/forward/surface_load.h>
 
+#include <array>
+
 namespace RestShape
 {
   using namespace dealii;
@@ -20,6 +22,9 @@ namespace RestShape
     const unsigned int               n_dofs    = context.fe.n_dofs_per_cell();
     const std::vector<unsigned int> &component = c.d.components();
     const FaceScratch               &s         = c.scratch;
+    // The shape functions of a cell: 81 for Q2 hexahedra, the most there is.
+    std::array<unsigned int, 81> rows;
+    AssertThrow(n_dofs <= rows.size(), ExcInternalError());
     for (const unsigned int f : c.cell->face_indices())
       if (c.cell->face(f)->at_boundary())
         {
@@ -30,14 +35,21 @@ namespace RestShape
               const double       JxW =
                 rest_area(s.face_grad_w[q], fv.normal_vector(q)) * fv.JxW(q);
               c.energy += 0.5 * k * u_rest.norm_square() * JxW;
+              // The shape functions that do not vanish at the point: those
+              // of the face.
+              unsigned int n_rows = 0;
               for (unsigned int i = 0; i < n_dofs; ++i)
+                if (fv.shape_value(i, q) != 0)
+                  rows[n_rows++] = i;
+              for (unsigned int r = 0; r < n_rows; ++r)
                 {
+                  const unsigned int i   = rows[r];
                   const unsigned int ci  = component[i];
                   const double       phi = fv.shape_value(i, q);
                   c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
                   if (c.matrix)
-                    for (unsigned int j = 0; j < n_dofs; ++j)
-                      if (component[j] == ci)
+                    for (unsigned int t = 0; t < n_rows; ++t)
+                      if (const unsigned int j = rows[t]; component[j] == ci)
                         c.cell_matrix(i, j) +=
                           k * phi * fv.shape_value(j, q) * JxW;
                 }

@@ -4,12 +4,19 @@
 #include <restshape/base/mpi_reductions.h>
 #include <restshape/forward/surface_pressure.h>
 
+#include <array>
 #include <limits>
 #include <map>
 
 namespace RestShape
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// Of the scalar element: 27 for Q2 hexahedra, the most there is.
+    constexpr unsigned int max_scalar_functions = 27;
+  } // namespace
 
   SurfacePressure::SurfacePressure(const LoadContext &context)
     : context(context)
@@ -170,12 +177,12 @@ namespace RestShape
     const unsigned int  n_dofs   = fe.n_dofs_per_cell();
     FullMatrix<double> &K        = c.scratch.face_matrix;
     bool                any_face = false;
-    if (c.matrix && follower)
-      K = 0;
     for (const unsigned int f : c.cell->face_indices())
       {
         if (!c.cell->face(f)->at_boundary())
           continue;
+        if (c.matrix && follower && !any_face)
+          K = 0;
         any_face              = true;
         const FaceScratch &fv = c.face(f);
         // An opening of the skull: its faces lose the opening's pressure.
@@ -245,17 +252,36 @@ namespace RestShape
       }
     if (!c.matrix)
       return;
-    // K_ij = -d f_i / d u_j = phi_i (dp_j a + p da_j)[c_i].
+    // K_ij = -d f_i / d u_j = phi_i (dp_j a + p da_j)[c_i], with
+    // da_j = e_cj x (F (N x grad phi_j)) dA (cofactor_derivative): the
+    // product F (N x g) once per scalar function, the rows only of the
+    // shape functions that do not vanish at the point (those of the face).
     const Tensor<1, 3> grad_p = load->pressure_gradient(c.load, x, face);
+    const std::vector<unsigned int> &scalar = c.d.scalar_functions();
+    const FEFaceValues<3>           &ffv    = fv.fe_face_values;
+    std::array<Tensor<1, 3>, max_scalar_functions>     h;
+    std::array<unsigned int, 3 * max_scalar_functions> rows;
+    unsigned int                                       n_rows = 0;
+    AssertThrow(ffv.get_fe().n_dofs_per_cell() <= max_scalar_functions,
+                ExcInternalError());
+    for (unsigned int k = 0; k < ffv.get_fe().n_dofs_per_cell(); ++k)
+      h[k] = F * cross_product_3d(N, ffv.shape_grad(k, q));
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      if (fv.shape_value(i, q) != 0)
+        rows[n_rows++] = i;
     for (unsigned int j = 0; j < n_dofs; ++j)
       {
         const unsigned int cj    = component[j];
         const double       phi_j = fv.shape_value(j, q);
+        Tensor<1, 3>       e;
+        e[cj] = 1;
         const Tensor<1, 3> dt =
-          grad_p[cj] * phi_j * a +
-          p * cofactor_derivative(F, N, cj, fv.shape_grad(j, q)) * dA;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          s.face_matrix(i, j) += fv.shape_value(i, q) * dt[component[i]];
+          grad_p[cj] * phi_j * a + p * cross_product_3d(e, h[scalar[j]]) * dA;
+        for (unsigned int r = 0; r < n_rows; ++r)
+          {
+            const unsigned int i = rows[r];
+            s.face_matrix(i, j) += fv.shape_value(i, q) * dt[component[i]];
+          }
       }
   }
 
