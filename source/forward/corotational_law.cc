@@ -73,6 +73,71 @@ namespace RestShape
       }
   }
 
+  namespace
+  {
+    /// The exact dP/dF of the co-rotational law at P = 2 mu (F - R) +
+    /// lambda tr(E) R, M = (tr S I - S)^-1.
+    void
+    consistent_tangent(const double   mu,
+                       const double   lambda,
+                       const Tensor2 &R,
+                       const Tensor2 &M,
+                       const double   tr_E,
+                       Tensor4       &A)
+    {
+      // dP = 2 mu dF + (lambda tr E - 2 mu) dR + lambda tr(R^T dF) R, with
+      // dR = R skew(omega), omega = M a and a the axial vector of
+      // R^T dF - dF^T R. For dF = e_k (x) e_L: a = e_L x r, r = R^T e_k, and
+      // tr(R^T dF) = R_kL; column J of skew(omega) is omega x e_J.
+      const double c = lambda * tr_E - 2 * mu;
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int L = 0; L < 3; ++L)
+          {
+            Tensor<1, 3> e_L;
+            e_L[L]                     = 1;
+            const Tensor<1, 3> r       = R[k];
+            const Tensor<1, 3> omega   = M * cross_product_3d(e_L, r);
+            const double       w[3][3] = {{0, omega[2], -omega[1]},
+                                          {-omega[2], 0, omega[0]},
+                                          {omega[1], -omega[0], 0}};
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int J = 0; J < 3; ++J)
+                {
+                  const double dR =
+                    R[i][0] * w[J][0] + R[i][1] * w[J][1] + R[i][2] * w[J][2];
+                  A[i][J][k][L] = c * dR + lambda * R[k][L] * R[i][J];
+                }
+            A[k][L][k][L] += 2 * mu;
+          }
+    }
+
+    /// The warped tangent R K0 R^T (no dR term).
+    void
+    warped_tangent(const double   mu,
+                   const double   lambda,
+                   const Tensor2 &R,
+                   Tensor4       &A)
+    {
+      // dP = R (2 mu sym(Z) + lambda tr(Z) I), Z = R^T dF.
+      const Tensor2 R_T = transpose(R);
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int L = 0; L < 3; ++L)
+          {
+            // dF = e_k (x) e_L; Z = R^T dF has only column L: Z_mL = R_km.
+            Tensor2 Z;
+            for (unsigned int m = 0; m < 3; ++m)
+              Z[m][L] = R_T[m][k];
+            const Tensor2 sym_Z = 0.5 * (Z + transpose(Z));
+            const Tensor2 dP =
+              R * (2 * mu * sym_Z +
+                   lambda * trace(Z) * Tensor2(unit_symmetric_tensor<3>()));
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int J = 0; J < 3; ++J)
+                A[i][J][k][L] = dP[i][J];
+          }
+    }
+  } // namespace
+
   CorotationalLaw::CorotationalLaw(const LawParameters &parameters)
     : MaterialLaw(parameters)
   {}
@@ -98,41 +163,18 @@ namespace RestShape
     if (tangent == nullptr)
       return true;
 
-    // (tr S I - S)^-1 maps the axial vector of W S + S W to that of W.
-    const Tensor2 M   = invert(trace(S) * unit_symmetric_tensor<3>() - S);
-    const Tensor2 R_T = transpose(R);
-    Tensor4      &A   = *tangent;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int L = 0; L < 3; ++L)
-        {
-          // dF = e_k (x) e_L; Z = R^T dF has only column L: Z_mL = R_km.
-          Tensor2 Z;
-          for (unsigned int m = 0; m < 3; ++m)
-            Z[m][L] = R_T[m][k];
-          Tensor2 dP;
-          if (type == TangentType::warped)
-            {
-              const Tensor2 sym_Z = 0.5 * (Z + transpose(Z));
-              dP                  = R * (2 * mu * sym_Z + lambda * trace(Z) *
-                                           Tensor2(unit_symmetric_tensor<3>()));
-            }
-          else
-            {
-              const Tensor2 skew = Z - transpose(Z);
-              Tensor<1, 3>  a;
-              a[0]             = skew[2][1];
-              a[1]             = skew[0][2];
-              a[2]             = skew[1][0];
-              const Tensor2 dR = R * skew_matrix(M * a);
-              dP = (lambda * tr_E - 2 * mu) * dR + lambda * trace(Z) * R;
-              dP[k][L] += 2 * mu;
-            }
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int J = 0; J < 3; ++J)
-              A[i][J][k][L] = dP[i][J];
-        }
+    if (type == TangentType::warped)
+      warped_tangent(mu, lambda, R, *tangent);
+    else
+      // (tr S I - S)^-1 maps the axial vector of W S + S W to that of W.
+      consistent_tangent(mu,
+                         lambda,
+                         R,
+                         invert(trace(S) * unit_symmetric_tensor<3>() - S),
+                         tr_E,
+                         *tangent);
     if (type == TangentType::projected)
-      project_twist_modes(R, S, tr_E, A);
+      project_twist_modes(R, S, tr_E, *tangent);
     return true;
   }
 
