@@ -17,8 +17,10 @@
 # two whole runs' wall times. The quadratic brains run the direct inverse
 # only (the fixed point takes 750 s on the touching skull).
 # Fails unless both methods converge on every scene and the direct
-# inverse leaves the fixed point no rest-shape update on the column and
-# the brain (the figure it stands for; not a time), and unless it takes at
+# inverse leaves the fixed point no rest-shape update on the column, the
+# brain and the cantilever (the figure it stands for; not a time; the
+# skull scenes' targets cross the skull, where the fixed point takes the
+# direct inverse's rest shape on to the admissible target), and unless it takes at
 # most MAX_PRODUCTS_PER_STEP (2.5) Jacobian products per Newton step there
 # (the forcing term: 13 products in 4 steps on the brain without it).
 #
@@ -67,7 +69,7 @@ for entry in "${scenes[@]}"; do
     steps=$(value direct_inverse_newton_steps "$s")
     products=$(value direct_inverse_jacobian_products "$s")
     l2=$(value rest_l2_error_relative "$s")
-    if [ "$method" = direct ] && [[ $name != cantilever && $name != brain_skull_* ]] &&
+    if [ "$method" = direct ] && [[ $name != brain_skull_* ]] &&
       [ "$updates" != 0 ]; then
       echo "FAIL: $name: the fixed point needed $updates rest-shape updates after the direct inverse"
       status=1

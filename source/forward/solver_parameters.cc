@@ -131,15 +131,17 @@ namespace RestShape
       std::to_string(default_watchdog_steps),
       Patterns::Integer(0, 20),
       "Without contact: a full Newton step at whose end the total potential "
-      "energy lies above the line search's (Armijo) target is taken anyway, "
+      "energy (in the direct inverse: |R|) lies above the line search's "
+      "(Armijo) target is taken anyway, "
       "on trial, and the next steps (with their line searches) have this "
       "many steps to bring the energy below that target; if they do not, "
       "Newton goes back to the state before it and shortens the step as "
       "the line search says (the watchdog of Chamberlain et al. 1982). It "
       "lets through the first full step of large rotations (a beam bending "
-      "under its own weight from the straight state), whose shortened steps "
-      "cost more Newton steps (doc/benchmarks.md). 0: off, every step as "
-      "the line search says.");
+      "under its own weight from the straight state, and the direct inverse "
+      "of its rest shape), whose shortened steps cost more Newton steps "
+      "(doc/benchmarks.md); in the direct inverse a trial that fails fails "
+      "its load step. 0: off, every step as the line search says.");
     prm.declare_entry(
       "Check stability",
       "auto",

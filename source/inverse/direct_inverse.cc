@@ -1,6 +1,7 @@
 // DirectInverse: Jacobian-free Newton on the equilibrium at the target
 // with the rest shape as unknown (see direct_inverse.h).
 #include <restshape/base/input_error.h>
+#include <restshape/forward/newton_watchdog.h>
 #include <restshape/inverse/direct_inverse.h>
 #include <restshape/inverse/flexible_gmres.h>
 
@@ -178,14 +179,22 @@ namespace RestShape
     VectorType r = forward.zero_vector();
     if (!residual(w, r))
       return false;
-    unsigned int slow = 0;
-    double       last = std::numeric_limits<double>::max(), eta = max_forcing;
+    // Full steps whose |R| lies above the line search's target are taken
+    // on trial, as in the forward solve (Solver/Watchdog steps): the
+    // first step of large rotations stretches the rest shape, the next
+    // ones turn the stretch into the rotation.
+    NewtonWatchdog watchdog(forward.scene_parameters().solver.watchdog_steps);
+    unsigned int   slow = 0;
+    double         last = std::numeric_limits<double>::max(), eta = max_forcing;
+    bool           on_trial = false;
     for (unsigned int step = 0;; ++step)
       {
         result.relative_residual = r.l2_norm() / reference;
         if (result.relative_residual <= tolerance)
           return true;
-        slow = result.relative_residual > slow_progress * last ? slow + 1 : 0;
+        slow = !on_trial && result.relative_residual > slow_progress * last ?
+                 slow + 1 :
+                 0;
         eta  = forcing_term(eta, last, result.relative_residual, tolerance);
         last = result.relative_residual;
         if (step == max_newton_steps || slow == 2)
@@ -199,14 +208,42 @@ namespace RestShape
             return false;
           }
         const auto [delta, products] = newton_direction(w, r, eta);
-        if (!line_search(w, r, delta))
-          return false;
+        const Step taken             = line_search(w, r, delta, watchdog);
+        if (taken == Step::failed)
+          {
+            if (watchdog.abandon())
+              result.failure = trial_failure(watchdog);
+            return false;
+          }
         ++result.newton_steps;
         pcout << "  Direct inverse, load " << s << ", Newton " << step + 1
               << ": |R|/|R0| " << last << " -> " << r.l2_norm() / reference
               << ", GMRES " << products << " its to " << eta << " |R|"
+              << (taken == Step::on_trial ? " (full step on trial)" : "")
               << std::endl;
+        if (taken == Step::on_trial)
+          {
+            on_trial = true;
+            continue;
+          }
+        // A trial that fails fails the load step: its shortened steps
+        // would make slow progress (the continuation halves the load).
+        const auto verdict = watchdog.judge(r.l2_norm());
+        if (verdict == NewtonWatchdog::Verdict::restore)
+          {
+            result.failure = trial_failure(watchdog);
+            return false;
+          }
+        if (verdict == NewtonWatchdog::Verdict::cleared)
+          on_trial = false;
       }
+  }
+
+  std::string
+  DirectInverse::trial_failure(const NewtonWatchdog &watchdog)
+  {
+    return "a full step taken on trial left |R| above its target after " +
+           std::to_string(watchdog.trial_steps()) + " more steps";
   }
 
   std::pair<VectorType, unsigned int>
@@ -239,10 +276,11 @@ namespace RestShape
     return {delta, gmres.iterations};
   }
 
-  bool
+  DirectInverse::Step
   DirectInverse::line_search(VectorType       &w,
                              VectorType       &r,
-                             const VectorType &delta)
+                             const VectorType &delta,
+                             NewtonWatchdog   &watchdog)
   {
     // Backtracking on |R|, never through an inverted rest cell.
     const double r_norm  = r.l2_norm();
@@ -252,15 +290,25 @@ namespace RestShape
       {
         w_trial = w;
         w_trial.add(alpha, delta);
-        if (residual(w_trial, r_trial) &&
-            r_trial.l2_norm() <= (1 - armijo * alpha) * r_norm)
+        if (!residual(w_trial, r_trial))
+          continue;
+        const double trial_norm = r_trial.l2_norm();
+        const bool   decreases  = trial_norm <= (1 - armijo * alpha) * r_norm;
+        // A full step above the target may still lead to the solution:
+        // the watchdog takes it on trial (never one with an inverted cell).
+        const bool let_through = !decreases && h == 0 &&
+                                 std::isfinite(trial_norm) &&
+                                 watchdog.may_let_through();
+        if (let_through)
+          watchdog.let_through(w, (1 - armijo) * r_norm);
+        if (decreases || let_through)
           {
             w = w_trial;
             r = r_trial;
-            return true;
+            return let_through ? Step::on_trial : Step::accepted;
           }
       }
     result.failure = "the line search could not reduce the residual";
-    return false;
+    return Step::failed;
   }
 } // namespace RestShape

@@ -6,6 +6,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <restshape/forward/forward_problem.h>
+#include <restshape/forward/newton_watchdog.h>
 
 #include <string>
 #include <utility>
@@ -35,11 +36,13 @@ namespace RestShape
    * inner CG + AMG solve; for small strains dR/dw = -dR/dd, so GMRES needs
    * a few iterations) only as far as Eisenstat and Walker's forcing term
    * asks (loosely far from the solution); a backtracking line search on |R|
-   * that never accepts a rest shape with an inverted cell; continuation in
+   * that never accepts a rest shape with an inverted cell, except that a
+   * full step above its target is taken on trial (NewtonWatchdog, Solver/
+   * Watchdog steps: the cantilever's large rotations); continuation in
    * the load (a failed increment is halved; after three failed increments
    * it gives up). A load step fails after 15 Newton steps or two in a row
-   * that keep more than 90 % of the residual (the cantilever's large
-   * rotations: the Newton step in the rest shape is then a poor model).
+   * (not on trial) that keep more than 90 % of the residual (the Newton
+   * step in the rest shape is then a poor model).
    */
   class DirectInverse
   {
@@ -83,10 +86,23 @@ namespace RestShape
     /// by the forward tangent; with the number of GMRES iterations.
     std::pair<VectorType, unsigned int>
     newton_direction(const VectorType &w, const VectorType &r, double eta);
+    enum class Step
+    {
+      accepted, // |R| decreased (Armijo)
+      on_trial, // the full step, let through by the watchdog
+      failed    // no step decreased |R| without an inverted cell
+    };
     /// Backtrack along @p delta until |R| decreases (Armijo) with no
-    /// inverted cell; updates @p w and @p r.
-    bool
-    line_search(VectorType &w, VectorType &r, const VectorType &delta);
+    /// inverted cell, or take the full step on trial where @p watchdog
+    /// lets it through; updates @p w and @p r.
+    Step
+    line_search(VectorType       &w,
+                VectorType       &r,
+                const VectorType &delta,
+                NewtonWatchdog   &watchdog);
+    /// Why a load step failed whose full step was on trial.
+    static std::string
+    trial_failure(const NewtonWatchdog &watchdog);
 
     ForwardProblem             &forward;
     dealii::ConditionalOStream &pcout;
