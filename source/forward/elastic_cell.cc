@@ -51,6 +51,41 @@ namespace RestShape
           ((At[r] * b0 + At[v_size + r] * b1) + At[2 * v_size + r] * b2) * dV;
     }
 
+    /// The residual's terms of one component c at one point, for the
+    /// scalar functions k < @p n: f_ext = phi_k f_c JxW, f_int = (P_c .
+    /// b_k) dV, summed into @p external, @p rhs (f_ext - f_int) and, if not
+    /// null, @p magnitude (|f_ext| + |f_int|).
+    void
+    residual_terms(const unsigned int n,
+                   const double *__restrict phi,
+                   const double *__restrict bx,
+                   const double *__restrict by,
+                   const double *__restrict bz,
+                   const Tensor<1, 3> &P_c,
+                   const double        f_c,
+                   const double        JxW,
+                   const double        dV,
+                   double *__restrict external,
+                   double *__restrict rhs,
+                   double *__restrict magnitude)
+    {
+      const double P0 = P_c[0], P1 = P_c[1], P2 = P_c[2];
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double f_ext = phi[k] * f_c * JxW;
+          const double f_int = ((P0 * bx[k] + P1 * by[k]) + P2 * bz[k]) * dV;
+          external[k] += f_ext;
+          rhs[k] += f_ext - f_int;
+        }
+      if (magnitude != nullptr)
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double f_ext = phi[k] * f_c * JxW;
+            const double f_int = ((P0 * bx[k] + P1 * by[k]) + P2 * bz[k]) * dV;
+            magnitude[k] += std::abs(f_ext) + std::abs(f_int);
+          }
+    }
+
     /// The position of the pair k >= l among the pairs of scalar functions.
     unsigned int
     pair_index(const unsigned int k, const unsigned int l)
@@ -63,6 +98,7 @@ namespace RestShape
     : n_scalar(fe.base_element(0).n_dofs_per_cell())
     , index(3 * n_scalar)
     , b(3 * n_scalar)
+    , phi(n_scalar)
     , v(v_size * n_scalar)
     , blocks(block_size * pair_index(n_scalar, 0))
     , rhs(3 * n_scalar)
@@ -82,49 +118,47 @@ namespace RestShape
   {
     magnitudes = sum_magnitudes;
     first      = true;
+    std::fill(rhs.begin(), rhs.end(), 0.);
+    std::fill(external.begin(), external.end(), 0.);
+    if (magnitudes)
+      std::fill(magnitude.begin(), magnitude.end(), 0.);
   }
 
   void
   ElasticCell::add(const FEValues<3> &fe_values, const Point &p)
   {
+    const Tensor<2, 3> &G = p.G_inv_T;
     for (unsigned int k = 0; k < n_scalar; ++k)
       {
-        const Tensor<1, 3> g = p.G_inv_T * fe_values.shape_grad(k, p.q);
+        const Tensor<1, 3> &g = fe_values.shape_grad(k, p.q);
         for (unsigned int L = 0; L < 3; ++L)
-          b[3 * k + L] = g[L];
+          b[L * n_scalar + k] =
+            (G[L][0] * g[0] + G[L][1] * g[1]) + G[L][2] * g[2];
+        phi[k] = fe_values.shape_value(k, p.q);
       }
-    add_residual(fe_values, p);
+    add_residual(p);
     if (p.A != nullptr)
       add_tangent(p);
     first = false;
   }
 
   void
-  ElasticCell::add_residual(const FEValues<3> &fe_values, const Point &p)
+  ElasticCell::add_residual(const Point &p)
   {
+    const double *bx = &b[0], *by = &b[n_scalar], *bz = &b[2 * n_scalar];
     for (unsigned int c = 0; c < 3; ++c)
-      for (unsigned int k = 0; k < n_scalar; ++k)
-        {
-          const double *bk = &b[3 * k];
-          const double  f_ext =
-            fe_values.shape_value(k, p.q) * p.f_body[c] * p.JxW;
-          const double f_int =
-            ((p.P[c][0] * bk[0] + p.P[c][1] * bk[1]) + p.P[c][2] * bk[2]) *
-            p.dV_rest;
-          const unsigned int r = c * n_scalar + k;
-          if (first)
-            {
-              external[r] = f_ext;
-              rhs[r]      = f_ext - f_int;
-              if (magnitudes)
-                magnitude[r] = std::abs(f_ext) + std::abs(f_int);
-              continue;
-            }
-          external[r] += f_ext;
-          rhs[r] += f_ext - f_int;
-          if (magnitudes)
-            magnitude[r] += std::abs(f_ext) + std::abs(f_int);
-        }
+      residual_terms(n_scalar,
+                     phi.data(),
+                     bx,
+                     by,
+                     bz,
+                     p.P[c],
+                     p.f_body[c],
+                     p.JxW,
+                     p.dV_rest,
+                     &external[c * n_scalar],
+                     &rhs[c * n_scalar],
+                     magnitudes ? &magnitude[c * n_scalar] : nullptr);
   }
 
   void
@@ -139,15 +173,15 @@ namespace RestShape
         for (unsigned int cj = 0; cj < 3; ++cj)
           for (unsigned int L = 0; L < 3; ++L)
             At[v_size * L + slice * K + 3 * cj + ci] = A[ci][K][cj][L];
+    const double *bx = &b[0], *by = &b[n_scalar], *bz = &b[2 * n_scalar];
     for (unsigned int l = 0; l < n_scalar; ++l)
-      contract(
-        At, b[3 * l], b[3 * l + 1], b[3 * l + 2], p.dV_rest, &v[v_size * l]);
+      contract(At, bx[l], by[l], bz[l], p.dV_rest, &v[v_size * l]);
     for (unsigned int k = 0; k < n_scalar; ++k)
       for (unsigned int l = 0; l <= k; ++l)
         add_block(&v[v_size * l],
-                  b[3 * k],
-                  b[3 * k + 1],
-                  b[3 * k + 2],
+                  bx[k],
+                  by[k],
+                  bz[k],
                   first,
                   &blocks[block_size * pair_index(k, l)]);
   }

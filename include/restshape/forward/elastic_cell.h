@@ -59,7 +59,7 @@ namespace RestShape
 
   private:
     void
-    add_residual(const dealii::FEValues<3> &fe_values, const Point &p);
+    add_residual(const Point &p);
     void
     add_tangent(const Point &p);
 
@@ -69,8 +69,9 @@ namespace RestShape
     std::vector<unsigned int> index;
     bool                      magnitudes = false;
     bool                      first      = true; // no point added yet
-    /// Per scalar function k: its rest-configuration gradient b[3 k + L].
-    std::vector<double> b;
+    /// Per scalar function k: its rest-configuration gradient
+    /// b[L n_scalar + k], and its value phi[k], at the current point.
+    std::vector<double> b, phi;
     /// Per scalar function k: v[30 k + 10 K + 3 cj + ci] =
     /// dV_rest sum_L A[ci][K][cj][L] b_k[L] (10 entries per K, 9 used).
     std::vector<double> v;
