@@ -10,7 +10,7 @@
 # usage: benchmarks/assembly/run.sh [--coarse]
 #   --coarse: P1 only (the version in the tests); fails if a P1 matrix
 #   assembly costs more than MAX_MATRIX_PER_CELL instructions per cell
-#   (32,000: 27,557 now, 29,509 before the law's cell terms by scalar
+#   (32,000: 25,344 now, 29,509 before the law's cell terms by scalar
 #   functions, 47,360 before the cached scatter, the scalar FEValues and
 #   the shared face values). Exits 77 (skipped) without valgrind.
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/assembly).

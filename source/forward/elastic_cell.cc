@@ -125,17 +125,8 @@ namespace RestShape
   }
 
   void
-  ElasticCell::add(const FEValues<3> &fe_values, const Point &p)
+  ElasticCell::add_terms(const Point &p)
   {
-    const Tensor<2, 3> &G = p.G_inv_T;
-    for (unsigned int k = 0; k < n_scalar; ++k)
-      {
-        const Tensor<1, 3> &g = fe_values.shape_grad(k, p.q);
-        for (unsigned int L = 0; L < 3; ++L)
-          b[L * n_scalar + k] =
-            (G[L][0] * g[0] + G[L][1] * g[1]) + G[L][2] * g[2];
-        phi[k] = fe_values.shape_value(k, p.q);
-      }
     add_residual(p);
     if (p.A != nullptr)
       add_tangent(p);

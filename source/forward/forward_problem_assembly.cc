@@ -3,14 +3,38 @@
 
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/filtered_iterator.h>
 
 #include <restshape/forward/elastic_cell.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/forward/simplex_values.h>
 
 namespace RestShape
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// The gradient of @p field at each point of @p values (FEValues or
+    /// SimplexValues of the scalar element): LocalField::gradients, the
+    /// same sums in the same order.
+    template <typename Values>
+    void
+    field_gradients(const LocalField     &field,
+                    const Values         &values,
+                    std::vector<Tensor2> &result)
+    {
+      const std::vector<unsigned int> &component = field.components();
+      const std::vector<unsigned int> &scalar    = field.scalar_functions();
+      const unsigned int               n_points  = values.n_quadrature_points;
+      std::fill(result.begin(), result.begin() + n_points, Tensor2());
+      for (unsigned int i = 0; i < component.size(); ++i)
+        if (const double value = field[i]; value != 0)
+          for (unsigned int q = 0; q < n_points; ++q)
+            result[q][component[i]] += value * values.shape_grad(scalar[i], q);
+    }
+  } // namespace
 
   // ------------------------------------------------------------------
   // Per-thread scratch and per-cell results of the assembly.
@@ -32,7 +56,14 @@ namespace RestShape
       , w_cell(fe)
       , faces(mapping, fe, face_quadrature)
       , elastic(fe)
-    {}
+    {
+      // Affine tetrahedra: their values without FEValues' machinery.
+      const auto *mapping_fe = dynamic_cast<const MappingFE<3> *>(&mapping);
+      if (fe.reference_cell() == ReferenceCells::Tetrahedron &&
+          mapping_fe != nullptr && mapping_fe->get_degree() == 1)
+        simplex =
+          std::make_unique<SimplexValues>(fe.base_element(0), quadrature);
+    }
 
     ScratchData(const ScratchData &other)
       : ScratchData(other.fe_values.get_mapping(),
@@ -41,11 +72,12 @@ namespace RestShape
                     other.faces.fe_face_values.get_quadrature())
     {}
 
-    FEValues<3>          fe_values; // of the scalar base element
-    std::vector<Tensor2> grad_d, grad_w;
-    LocalField           d_cell, w_cell; // d and w on the cell
-    FaceScratch          faces;          // of the load terms
-    ElasticCell          elastic;        // the law's terms
+    FEValues<3>                    fe_values; // of the scalar base element
+    std::vector<Tensor2>           grad_d, grad_w;
+    LocalField                     d_cell, w_cell; // d and w on the cell
+    FaceScratch                    faces;          // of the load terms
+    ElasticCell                    elastic;        // the law's terms
+    std::unique_ptr<SimplexValues> simplex;        // on affine tetrahedra
   };
 
   struct ForwardProblem::CopyData
@@ -80,19 +112,13 @@ namespace RestShape
     CopyData                                           &copy,
     const Assemble                                      what) const
   {
-    const bool   matrix     = (what == Assemble::residual_and_matrix);
-    const bool   magnitudes = (what == Assemble::residual_and_magnitudes);
-    FEValues<3> &fe_values  = scratch.fe_values;
-    // As a cell of the mesh: the DoFHandler's cell is of the vector element.
-    fe_values.reinit(static_cast<Triangulation<3>::cell_iterator>(cell));
+    const bool matrix     = (what == Assemble::residual_and_matrix);
+    const bool magnitudes = (what == Assemble::residual_and_magnitudes);
     cell->get_dof_indices(copy.dofs);
     copy.cell_index = cell->active_cell_index();
     copy.valid      = true;
-
     scratch.d_cell.gather(d_buffer, copy.dofs);
     scratch.w_cell.gather(w_buffer, copy.dofs);
-    scratch.d_cell.gradients(fe_values, scratch.grad_d);
-    scratch.w_cell.gradients(fe_values, scratch.grad_w);
     scratch.faces.forget();
 
     const Label        label = cell->material_id();
@@ -109,33 +135,55 @@ namespace RestShape
     Tensor4 A;
     double  W   = 0;
     copy.energy = 0;
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    // The law's terms at the points of @p values (of the scalar element,
+    // on this cell); false at an inverted point.
+    const auto add_points = [&](const auto &values) {
+      field_gradients(scratch.d_cell, values, scratch.grad_d);
+      field_gradients(scratch.w_cell, values, scratch.grad_w);
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+        {
+          // Rest configuration X_rest = X + w: dX_rest = G dX.
+          const Tensor2      G     = I + scratch.grad_w[q];
+          const double       det_G = determinant(G);
+          const Tensor2      G_inv = invert(G);
+          const Tensor2      F     = (I + scratch.grad_d[q]) * G_inv;
+          ElasticCell::Point p;
+          if (!(det_G > 0) ||
+              !law.evaluate(F, p.P, matrix ? &A : nullptr, tangent_type, &W))
+            return false;
+          p.q       = q;
+          p.G_inv_T = transpose(G_inv);
+          p.A       = matrix ? &A : nullptr;
+          p.JxW     = values.JxW(q);
+          p.dV_rest = det_G * p.JxW;
+          p.f_body =
+            varies ?
+              body_force(*cell, values.quadrature_point(q), current_load) :
+              cell_body_force;
+          copy.energy += W * p.dV_rest;
+          elastic.add(values, p);
+        }
+      return true;
+    };
+    // As a cell of the mesh: the DoFHandler's cell is of the vector element.
+    const Triangulation<3>::cell_iterator mesh_cell = cell;
+    bool                                  valid     = false;
+    if (scratch.simplex != nullptr)
       {
-        // Rest configuration X_rest = X + w: dX_rest = G dX.
-        const Tensor2      G     = I + scratch.grad_w[q];
-        const double       det_G = determinant(G);
-        const Tensor2      G_inv = invert(G);
-        const Tensor2      F     = (I + scratch.grad_d[q]) * G_inv;
-        ElasticCell::Point p;
-        if (!(det_G > 0) ||
-            !law.evaluate(F, p.P, matrix ? &A : nullptr, tangent_type, &W))
-          {
-            copy.valid  = false;
-            copy.center = cell->center();
-            copy.label  = label;
-            return;
-          }
-        p.q       = q;
-        p.G_inv_T = transpose(G_inv);
-        p.A       = matrix ? &A : nullptr;
-        p.JxW     = fe_values.JxW(q);
-        p.dV_rest = det_G * p.JxW;
-        p.f_body =
-          varies ?
-            body_force(*cell, fe_values.quadrature_point(q), current_load) :
-            cell_body_force;
-        copy.energy += W * p.dV_rest;
-        elastic.add(fe_values, p);
+        scratch.simplex->reinit(mesh_cell);
+        valid = add_points(*scratch.simplex);
+      }
+    else
+      {
+        scratch.fe_values.reinit(mesh_cell);
+        valid = add_points(scratch.fe_values);
+      }
+    if (!valid)
+      {
+        copy.valid  = false;
+        copy.center = cell->center();
+        copy.label  = label;
+        return;
       }
     elastic.vectors(copy.cell_rhs, copy.cell_external, copy.cell_magnitude);
     if (matrix)

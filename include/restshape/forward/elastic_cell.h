@@ -41,9 +41,23 @@ namespace RestShape
     void
     reinit(const bool magnitudes);
 
-    /// Add the point @p p, @p fe_values being of the scalar element.
+    /// Add the point @p p, @p values being of the scalar element (an
+    /// FEValues or a SimplexValues).
+    template <typename Values>
     void
-    add(const dealii::FEValues<3> &fe_values, const Point &p);
+    add(const Values &values, const Point &p)
+    {
+      const dealii::Tensor<2, 3> &G = p.G_inv_T;
+      for (unsigned int k = 0; k < n_scalar; ++k)
+        {
+          const dealii::Tensor<1, 3> &g = values.shape_grad(k, p.q);
+          for (unsigned int L = 0; L < 3; ++L)
+            b[L * n_scalar + k] =
+              (G[L][0] * g[0] + G[L][1] * g[1]) + G[L][2] * g[2];
+          phi[k] = values.shape_value(k, p.q);
+        }
+      add_terms(p);
+    }
 
     /// The cell's f_ext - f_int, f_ext and, if asked at reinit(), the
     /// magnitudes, by the vector element's shape functions.
@@ -58,6 +72,9 @@ namespace RestShape
     matrix(dealii::FullMatrix<double> &matrix) const;
 
   private:
+    /// The point's terms, with b and phi set.
+    void
+    add_terms(const Point &p);
     void
     add_residual(const Point &p);
     void
