@@ -14,28 +14,6 @@ namespace RestShape
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// The gradient of @p field at each point of @p values (FEValues or
-    /// SimplexValues of the scalar element): LocalField::gradients, the
-    /// same sums in the same order.
-    template <typename Values>
-    void
-    field_gradients(const LocalField     &field,
-                    const Values         &values,
-                    std::vector<Tensor2> &result)
-    {
-      const std::vector<unsigned int> &component = field.components();
-      const std::vector<unsigned int> &scalar    = field.scalar_functions();
-      const unsigned int               n_points  = values.n_quadrature_points;
-      std::fill(result.begin(), result.begin() + n_points, Tensor2());
-      for (unsigned int i = 0; i < component.size(); ++i)
-        if (const double value = field[i]; value != 0)
-          for (unsigned int q = 0; q < n_points; ++q)
-            result[q][component[i]] += value * values.shape_grad(scalar[i], q);
-    }
-  } // namespace
-
   // ------------------------------------------------------------------
   // Per-thread scratch and per-cell results of the assembly.
 
@@ -138,8 +116,8 @@ namespace RestShape
     // The law's terms at the points of @p values (of the scalar element,
     // on this cell); false at an inverted point.
     const auto add_points = [&](const auto &values) {
-      field_gradients(scratch.d_cell, values, scratch.grad_d);
-      field_gradients(scratch.w_cell, values, scratch.grad_w);
+      scratch.d_cell.gradients(values, scratch.grad_d);
+      scratch.w_cell.gradients(values, scratch.grad_w);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
           // Rest configuration X_rest = X + w: dX_rest = G dX.

@@ -186,13 +186,13 @@ namespace RestShape
     NewtonWatchdog watchdog(forward.scene_parameters().solver.watchdog_steps);
     unsigned int   slow = 0;
     double         last = std::numeric_limits<double>::max(), eta = max_forcing;
-    bool           on_trial = false;
     for (unsigned int step = 0;; ++step)
       {
         result.relative_residual = r.l2_norm() / reference;
         if (result.relative_residual <= tolerance)
           return true;
-        slow = !on_trial && result.relative_residual > slow_progress * last ?
+        slow = !watchdog.on_trial() &&
+                   result.relative_residual > slow_progress * last ?
                  slow + 1 :
                  0;
         eta  = forcing_term(eta, last, result.relative_residual, tolerance);
@@ -221,21 +221,14 @@ namespace RestShape
               << ", GMRES " << products << " its to " << eta << " |R|"
               << (taken == Step::on_trial ? " (full step on trial)" : "")
               << std::endl;
-        if (taken == Step::on_trial)
-          {
-            on_trial = true;
-            continue;
-          }
         // A trial that fails fails the load step: its shortened steps
         // would make slow progress (the continuation halves the load).
-        const auto verdict = watchdog.judge(r.l2_norm());
-        if (verdict == NewtonWatchdog::Verdict::restore)
+        if (taken == Step::accepted &&
+            watchdog.judge(r.l2_norm()) == NewtonWatchdog::Verdict::restore)
           {
             result.failure = trial_failure(watchdog);
             return false;
           }
-        if (verdict == NewtonWatchdog::Verdict::cleared)
-          on_trial = false;
       }
   }
 

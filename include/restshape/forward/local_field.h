@@ -1,7 +1,7 @@
 // A vector field (the displacement d or the rest displacement w) on one
 // cell: its local coefficients, gathered once per cell, and its values and
-// gradients at the points of an FEValues or FEFaceValues of the scalar
-// base element. This replaces FEValuesViews::get_function_values and
+// gradients at the points of an FEValues, FEFaceValues or SimplexValues of the
+// scalar base element. This replaces FEValuesViews::get_function_values and
 // _gradients on the vector element, which allocate a vector and look every
 // coefficient up again on each call (a third of a P1 residual assembly,
 // profile of prm/brain.prm), and the vector element's FEValues, which
@@ -14,6 +14,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace RestShape
@@ -30,15 +31,32 @@ namespace RestShape
     gather(const dealii::LinearAlgebra::distributed::Vector<double> &v,
            const std::vector<dealii::types::global_dof_index>       &dofs);
 
-    /// The field at each point of @p fe_values (of the base element).
+    /// The field at each point of @p values (of the base element: an
+    /// FEValues, FEFaceValues or SimplexValues).
+    template <typename Values>
     void
-    values(const dealii::FEValuesBase<3>     &fe_values,
-           std::vector<dealii::Tensor<1, 3>> &result) const;
+    values(const Values                      &values,
+           std::vector<dealii::Tensor<1, 3>> &result) const
+    {
+      accumulate(values,
+                 result,
+                 [&](const unsigned int k, const unsigned int q) {
+                   return values.shape_value(k, q);
+                 });
+    }
 
     /// The gradient (result[q][c][k] = d field_c / dx_k) at each point.
+    template <typename Values>
     void
-    gradients(const dealii::FEValuesBase<3>     &fe_values,
-              std::vector<dealii::Tensor<2, 3>> &result) const;
+    gradients(const Values                      &values,
+              std::vector<dealii::Tensor<2, 3>> &result) const
+    {
+      accumulate(values,
+                 result,
+                 [&](const unsigned int k, const unsigned int q) {
+                   return values.shape_grad(k, q);
+                 });
+    }
 
     /// The coefficient of shape function @p i.
     double
@@ -62,6 +80,24 @@ namespace RestShape
     }
 
   private:
+    /// result[q][c] = sum_i coefficient_i shape(scalar_i, q), c the
+    /// component of shape function i: in the order of the shape functions,
+    /// skipping zero coefficients, as deal.II's get_function_values and
+    /// _gradients do, of the same scalar values: the same numbers.
+    template <typename Values, typename Result, typename Shape>
+    void
+    accumulate(const Values        &values,
+               std::vector<Result> &result,
+               const Shape         &shape) const
+    {
+      const unsigned int n_points = values.n_quadrature_points;
+      std::fill(result.begin(), result.begin() + n_points, Result());
+      for (unsigned int i = 0; i < component.size(); ++i)
+        if (const double value = coefficients[i]; value != 0)
+          for (unsigned int q = 0; q < n_points; ++q)
+            result[q][component[i]] += value * shape(scalar[i], q);
+    }
+
     std::vector<unsigned int> component, scalar;
     std::vector<double>       coefficients;
   };

@@ -61,6 +61,12 @@ namespace RestShape
     /// Steps the trial took.
     unsigned int
     trial_steps() const;
+    /// Whether a step let through is on trial (not yet judged).
+    bool
+    on_trial() const
+    {
+      return active;
+    }
 
   private:
     const unsigned int steps;
