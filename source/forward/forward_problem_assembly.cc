@@ -237,6 +237,11 @@ namespace RestShape
         tangent    = 0;
         rhs_buffer = 0;
       }
+    for (const auto &[lookup, constraints] :
+         {std::pair(&lookup_hanging, &constraints_hanging),
+          std::pair(&lookup_base, &constraints_base),
+          std::pair(&lookup_newton, &constraints_newton)})
+      lookup->reinit(*constraints, *raw_buffer.get_partitioner());
     bool          all_valid = true;
     double        energy    = 0;
     InvertedCells inverted;
@@ -264,22 +269,29 @@ namespace RestShape
             return;
           }
         energy += c.energy;
-        constraints_hanging.distribute_local_to_global(c.cell_rhs,
-                                                       c.dofs,
-                                                       raw_buffer);
-        constraints_base.distribute_local_to_global(c.cell_external,
-                                                    c.dofs,
-                                                    external_buffer);
-        constraints_newton.distribute_local_to_global(c.cell_rhs,
-                                                      c.dofs,
-                                                      condensed_buffer);
+        const Utilities::MPI::Partitioner &partitioner =
+          *raw_buffer.get_partitioner();
+        cell_local.resize(c.dofs.size());
+        for (unsigned int i = 0; i < c.dofs.size(); ++i)
+          cell_local[i] = partitioner.global_to_local(c.dofs[i]);
+        lookup_hanging.distribute(c.cell_rhs, c.dofs, cell_local, raw_buffer);
+        lookup_base.distribute(c.cell_external,
+                               c.dofs,
+                               cell_local,
+                               external_buffer);
+        lookup_newton.distribute(c.cell_rhs,
+                                 c.dofs,
+                                 cell_local,
+                                 condensed_buffer);
         if (what == Assemble::residual_and_magnitudes)
-          constraints_newton.distribute_local_to_global(c.cell_magnitude,
-                                                        c.dofs,
-                                                        magnitude_buffer);
+          lookup_newton.distribute(c.cell_magnitude,
+                                   c.dofs,
+                                   cell_local,
+                                   magnitude_buffer);
         if (matrix)
           scatter.add(c.cell_index,
-                      constraints_newton,
+                      lookup_newton,
+                      cell_local,
                       c.cell_matrix,
                       c.cell_rhs,
                       c.dofs,

@@ -2,6 +2,7 @@
 #include <restshape/forward/tangent_scatter.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -61,6 +62,7 @@ namespace RestShape
           return false;
       }
     std::sort(columns.begin(), columns.end());
+    std::vector<std::pair<int, const int *>> rows(n); // (length, columns)
     for (unsigned int i = 0; i < n; ++i)
       {
         const int row        = matrix.LRID(static_cast<int>(dofs[i]));
@@ -72,7 +74,22 @@ namespace RestShape
             length > std::numeric_limits<std::uint16_t>::max())
           return false;
         row_start[cell * n + i] = row_values - values;
-        int k                   = 0;
+        rows[i]                 = {length, indices};
+        std::uint16_t *place    = &position[(cell * n + i) * n];
+        // Another component of a node seen before: the same columns.
+        const auto same =
+          std::find_if(rows.begin(), rows.begin() + i, [&](const auto &other) {
+            return other.first == length &&
+                   std::equal(indices, indices + length, other.second);
+          });
+        if (same != rows.begin() + i)
+          {
+            const std::uint16_t *known =
+              &position[(cell * n + (same - rows.begin())) * n];
+            std::copy(known, known + n, place);
+            continue;
+          }
+        int k = 0;
         for (const auto &[col, j] : columns)
           {
             while (k < length && indices[k] < col)
@@ -81,7 +98,7 @@ namespace RestShape
             // the row's columns are not sorted (deal.II's path adds it).
             if (k == length || indices[k] != col)
               return false;
-            position[(cell * n + i) * n + j] = k;
+            place[j] = k;
           }
       }
     return true;
@@ -89,32 +106,91 @@ namespace RestShape
 
   void
   TangentScatter::add(const unsigned int                          cell,
-                      const AffineConstraints<double>            &constraints,
+                      const ConstraintLookup                     &lookup,
+                      const std::vector<unsigned int>            &local,
                       const FullMatrix<double>                   &cell_matrix,
                       const Vector<double>                       &cell_rhs,
                       const std::vector<types::global_dof_index> &dofs,
                       TrilinosWrappers::SparseMatrix             &matrix,
                       LinearAlgebra::distributed::Vector<double> &rhs)
   {
-    const bool constrained =
-      std::any_of(dofs.begin(), dofs.end(), [&](const auto dof) {
-        return constraints.is_constrained(dof);
-      });
-    if (constrained ||
+    const ConstraintLookup::Kind kind = lookup.strongest(local);
+    if (kind == ConstraintLookup::Kind::linked ||
         route(cell, dofs, matrix.trilinos_matrix()) != Route::direct)
       {
-        constraints.distribute_local_to_global(
+        lookup.constraints().distribute_local_to_global(
           cell_matrix, cell_rhs, dofs, matrix, rhs);
         return;
       }
     double *const all_values = matrix.trilinos_matrix()[0];
+    if (kind == ConstraintLookup::Kind::fixed)
+      {
+        add_with_fixed(
+          cell, lookup, local, cell_matrix, cell_rhs, all_values, rhs);
+        return;
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         double              *row   = all_values + row_start[cell * n + i];
         const std::uint16_t *place = &position[(cell * n + i) * n];
         for (unsigned int j = 0; j < n; ++j)
           row[place[j]] += cell_matrix(i, j);
-        rhs(dofs[i]) += cell_rhs(i);
+        rhs.local_element(local[i]) += cell_rhs(i);
+      }
+  }
+
+  void
+  TangentScatter::add_with_fixed(
+    const unsigned int                          cell,
+    const ConstraintLookup                     &lookup,
+    const std::vector<unsigned int>            &local,
+    const FullMatrix<double>                   &cell_matrix,
+    const Vector<double>                       &cell_rhs,
+    double *const                               all_values,
+    LinearAlgebra::distributed::Vector<double> &rhs)
+  {
+    using Kind = ConstraintLookup::Kind;
+    fixed.clear();
+    inhomogeneous.clear();
+    // The inhomogeneous ones last to first, AffineConstraints's order.
+    for (unsigned int k = n; k-- > 0;)
+      if (lookup.kind(local[k]) == Kind::fixed)
+        {
+          fixed.push_back(k);
+          if (lookup.inhomogeneity(local[k]) != 0.)
+            inhomogeneous.push_back(k);
+        }
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (lookup.kind(local[i]) == Kind::fixed)
+          continue;
+        double              *row   = all_values + row_start[cell * n + i];
+        const std::uint16_t *place = &position[(cell * n + i) * n];
+        for (unsigned int j = 0; j < n; ++j)
+          if (lookup.kind(local[j]) == Kind::free)
+            row[place[j]] += cell_matrix(i, j);
+        // The fixed values' columns moved to the right-hand side.
+        double value = cell_rhs(i);
+        for (const unsigned int k : inhomogeneous)
+          value -= cell_matrix(i, k) * lookup.inhomogeneity(local[k]);
+        if (value != 0.)
+          rhs.local_element(local[i]) += value;
+      }
+    // The fixed rows: their diagonal only, of the cell's scale.
+    double mean_diagonal = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      mean_diagonal += std::abs(cell_matrix(i, i));
+    mean_diagonal /= n;
+    if (mean_diagonal == 0.)
+      mean_diagonal = cell_matrix.l1_norm() / n;
+    if (mean_diagonal == 0.)
+      mean_diagonal = 1.;
+    for (const unsigned int k : fixed)
+      {
+        const double diagonal = std::abs(cell_matrix(k, k));
+        all_values[row_start[cell * n + k] +
+                   position[(cell * n + k) * n + k]] +=
+          diagonal != 0. ? diagonal : mean_diagonal;
       }
   }
 } // namespace RestShape

@@ -21,6 +21,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <restshape/forward/active_set_constraints.h>
+#include <restshape/forward/constraint_lookup.h>
 #include <restshape/forward/contact_conditions.h>
 #include <restshape/forward/discretization.h>
 #include <restshape/forward/forward_parameters.h>
@@ -425,6 +426,10 @@ namespace RestShape
 
     MatrixType     tangent;
     TangentScatter scatter; // of the cells' matrices into tangent
+    // The three constraint sets by the buffers' local indices (set at
+    // each assembly) and a cell's local indices (the copier's).
+    ConstraintLookup          lookup_hanging, lookup_base, lookup_newton;
+    std::vector<unsigned int> cell_local;
     // Each thread's assembly workspace, kept from one assembly to the next:
     // building its FEValues and FEFaceValues costs as much as assembling
     // a thousand P1 cells.
