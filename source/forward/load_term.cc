@@ -1,3 +1,5 @@
+#include <deal.II/fe/mapping_fe.h>
+
 #include <restshape/forward/load_term.h>
 
 namespace RestShape
@@ -41,6 +43,11 @@ namespace RestShape
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       scalar[i] = fe.system_to_component_index(i).second;
+    const auto *mapping_fe = dynamic_cast<const MappingFE<3> *>(&mapping);
+    if (fe.reference_cell() == ReferenceCells::Tetrahedron &&
+        mapping_fe != nullptr && mapping_fe->get_degree() == 1)
+      simplex = std::make_unique<SimplexFaceValues>(fe.base_element(0),
+                                                    face_quadrature);
   }
 
   FaceScratch::FaceScratch(const FaceScratch &other)
@@ -58,12 +65,23 @@ namespace RestShape
     if (f == current_face)
       return;
     // As a cell of the mesh: the DoFHandler's cell is of the vector element.
-    fe_face_values.reinit(static_cast<Triangulation<3>::cell_iterator>(cell),
-                          f);
-    d.values(fe_face_values, face_d);
-    w.values(fe_face_values, face_w);
-    d.gradients(fe_face_values, face_grad_d);
-    w.gradients(fe_face_values, face_grad_w);
+    const Triangulation<3>::cell_iterator mesh_cell = cell;
+    const auto                            fields    = [&](const auto &values) {
+      d.values(values, face_d);
+      w.values(values, face_w);
+      d.gradients(values, face_grad_d);
+      w.gradients(values, face_grad_w);
+    };
+    if (simplex)
+      {
+        simplex->reinit(mesh_cell, f);
+        fields(*simplex);
+      }
+    else
+      {
+        fe_face_values.reinit(mesh_cell, f);
+        fields(fe_face_values);
+      }
     current_face = f;
   }
 } // namespace RestShape

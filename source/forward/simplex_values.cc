@@ -64,6 +64,30 @@ namespace RestShape
       }
   }
 
+  SimplexValues::SimplexValues(const SimplexValues &all,
+                               const unsigned int   start,
+                               const unsigned int   n)
+    : n_quadrature_points(n)
+    , dofs_per_cell(all.dofs_per_cell)
+    , weights(all.weights.begin() + start, all.weights.begin() + start + n)
+    , values(dofs_per_cell * n)
+    , reference_gradients(values.size())
+    , vertex_shapes(all.vertex_shapes.begin() + start * n_vertices,
+                    all.vertex_shapes.begin() + (start + n) * n_vertices)
+    , gradients(values.size())
+    , JxW_values(n)
+    , points(n)
+  {
+    AssertThrow(start + n <= all.n_quadrature_points, ExcInternalError());
+    for (unsigned int k = 0; k < dofs_per_cell; ++k)
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          const unsigned int from = k * all.n_quadrature_points + start + q;
+          values[k * n + q]       = all.values[from];
+          reference_gradients[k * n + q] = all.reference_gradients[from];
+        }
+  }
+
   void
   SimplexValues::reinit(const Triangulation<3>::cell_iterator &cell)
   {
@@ -72,7 +96,6 @@ namespace RestShape
     Point<3> X[n_vertices];
     for (unsigned int v = 0; v < n_vertices; ++v)
       X[v] = cell->vertex(v);
-    DerivativeForm<1, 3, 3> J;
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = 0; j < 3; ++j)
         J[i][j] = -X[0][i] + X[j + 1][i];

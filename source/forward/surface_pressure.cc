@@ -258,14 +258,13 @@ namespace RestShape
     // shape functions that do not vanish at the point (those of the face).
     const Tensor<1, 3> grad_p = load->pressure_gradient(c.load, x, face);
     const std::vector<unsigned int> &scalar = c.d.scalar_functions();
-    const FEFaceValues<3>           &ffv    = fv.fe_face_values;
     std::array<Tensor<1, 3>, max_scalar_functions>     h;
     std::array<unsigned int, 3 * max_scalar_functions> rows;
     unsigned int                                       n_rows = 0;
-    AssertThrow(ffv.get_fe().n_dofs_per_cell() <= max_scalar_functions,
+    AssertThrow(fv.n_scalar_functions() <= max_scalar_functions,
                 ExcInternalError());
-    for (unsigned int k = 0; k < ffv.get_fe().n_dofs_per_cell(); ++k)
-      h[k] = F * cross_product_3d(N, ffv.shape_grad(k, q));
+    for (unsigned int k = 0; k < fv.n_scalar_functions(); ++k)
+      h[k] = F * cross_product_3d(N, fv.scalar_shape_grad(k, q));
     for (unsigned int i = 0; i < n_dofs; ++i)
       if (fv.shape_value(i, q) != 0)
         rows[n_rows++] = i;

@@ -19,9 +19,11 @@
 #include <restshape/forward/load_state.h>
 #include <restshape/forward/local_field.h>
 #include <restshape/forward/material.h>
+#include <restshape/forward/simplex_face_values.h>
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <functional>
+#include <memory>
 #include <set>
 #include <vector>
 
@@ -70,8 +72,9 @@ namespace RestShape
 
   /// Per-thread workspace of the face terms (sized for one cell). The
   /// load terms of one cell share it: it is set on a face once, with the
-  /// state's values and gradients there. Its FEFaceValues are of the
-  /// scalar base element; shape_value() and shape_grad() take the vector
+  /// state's values and gradients there. Its FEFaceValues (on affine
+  /// tetrahedra its SimplexFaceValues, the same numbers) are of the scalar
+  /// base element; shape_value() and shape_grad() take the vector
   /// element's shape functions.
   struct FaceScratch
   {
@@ -100,27 +103,48 @@ namespace RestShape
     double
     shape_value(const unsigned int i, const unsigned int q) const
     {
-      return fe_face_values.shape_value(scalar[i], q);
+      return scalar_shape_value(scalar[i], q);
     }
     const dealii::Tensor<1, 3> &
     shape_grad(const unsigned int i, const unsigned int q) const
     {
-      return fe_face_values.shape_grad(scalar[i], q);
+      return scalar_shape_grad(scalar[i], q);
+    }
+    /// Shape function @p k of the scalar element at point @p q.
+    double
+    scalar_shape_value(const unsigned int k, const unsigned int q) const
+    {
+      return simplex ? simplex->shape_value(k, q) :
+                       fe_face_values.shape_value(k, q);
+    }
+    const dealii::Tensor<1, 3> &
+    scalar_shape_grad(const unsigned int k, const unsigned int q) const
+    {
+      return simplex ? simplex->shape_grad(k, q) :
+                       fe_face_values.shape_grad(k, q);
+    }
+    /// The scalar element's number of shape functions.
+    unsigned int
+    n_scalar_functions() const
+    {
+      return fe_face_values.get_fe().n_dofs_per_cell();
     }
     double
     JxW(const unsigned int q) const
     {
-      return fe_face_values.JxW(q);
+      return simplex ? simplex->JxW(q) : fe_face_values.JxW(q);
     }
     const dealii::Tensor<1, 3> &
     normal_vector(const unsigned int q) const
     {
-      return fe_face_values.normal_vector(q);
+      return simplex ? simplex->normal_vector(q) :
+                       fe_face_values.normal_vector(q);
     }
     const dealii::Point<3> &
     quadrature_point(const unsigned int q) const
     {
-      return fe_face_values.quadrature_point(q);
+      return simplex ? simplex->quadrature_point(q) :
+                       fe_face_values.quadrature_point(q);
     }
     auto
     quadrature_point_indices() const
@@ -128,11 +152,13 @@ namespace RestShape
       return fe_face_values.quadrature_point_indices();
     }
 
-    const dealii::FiniteElement<3>   &fe; // the vector element
-    dealii::FEFaceValues<3>           fe_face_values;
-    std::vector<dealii::Tensor<1, 3>> face_d, face_w;
-    std::vector<Tensor2>              face_grad_d, face_grad_w;
-    dealii::FullMatrix<double>        face_matrix;
+    const dealii::FiniteElement<3> &fe; // the vector element
+    dealii::FEFaceValues<3>         fe_face_values;
+    /// On affine tetrahedra, what is used in place of fe_face_values.
+    std::unique_ptr<SimplexFaceValues> simplex;
+    std::vector<dealii::Tensor<1, 3>>  face_d, face_w;
+    std::vector<Tensor2>               face_grad_d, face_grad_w;
+    dealii::FullMatrix<double>         face_matrix;
 
   private:
     std::vector<unsigned int> scalar; // base function of shape function i

@@ -27,6 +27,12 @@ namespace RestShape
     SimplexValues(const dealii::FiniteElement<3> &fe,
                   const dealii::Quadrature<3>    &quadrature);
 
+    /// The points @p start to @p start + @p n of @p all as a rule of
+    /// their own (built without the reference cell's FEValues).
+    SimplexValues(const SimplexValues &all,
+                  const unsigned int   start,
+                  const unsigned int   n);
+
     /// On the tetrahedron @p cell (straight edges).
     void
     reinit(const dealii::Triangulation<3>::cell_iterator &cell);
@@ -51,6 +57,12 @@ namespace RestShape
     {
       return points[q];
     }
+    /// The Jacobian of the map from the reference cell (constant).
+    const dealii::DerivativeForm<1, 3, 3> &
+    jacobian() const
+    {
+      return J;
+    }
 
     const unsigned int n_quadrature_points;
     const unsigned int dofs_per_cell;
@@ -63,6 +75,7 @@ namespace RestShape
     std::vector<dealii::Tensor<1, 3>> gradients;           // [k][q]
     std::vector<double>               JxW_values;
     std::vector<dealii::Point<3>>     points;
+    dealii::DerivativeForm<1, 3, 3>   J;
   };
 } // namespace RestShape
 
