@@ -4,7 +4,9 @@ split by its caller.
 
 usage: calls.py CALLGRIND_OUT FUNCTION
 Prints one line per caller: "calls instructions caller". FUNCTION is the
-start of the callee's name (e.g. "RestShape::ForwardProblem::assemble(").
+start of the callee's name (e.g. "RestShape::TangentScatter::locate("), or
+its whole name when it ends in ")" (then its lambdas, whose names start
+with it, do not count).
 """
 import re
 import sys
@@ -21,7 +23,11 @@ def main(path, function):
             line = line.rstrip("\n")
             if pending is not None:
                 cost = int(line.split()[1]) if len(line.split()) > 1 else 0
-                if callee and callee.startswith(function):
+                if callee and (
+                    callee == function
+                    if function.endswith(")")
+                    else callee.startswith(function)
+                ):
                     calls, ir = totals.get(caller, (0, 0))
                     totals[caller] = (calls + pending, ir + cost)
                 pending = None

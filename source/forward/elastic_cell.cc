@@ -111,6 +111,25 @@ namespace RestShape
     for (unsigned int c = 0; c < 3; ++c)
       for (unsigned int k = 0; k < n_scalar; ++k)
         index[c * n_scalar + k] = fe.component_to_system_index(c, k);
+    // Entry (ci, k), (cj, l) of the pair k >= l is sum_K v_l[K][cj][ci]
+    // b_k[K]: the sum with the row of (ci, k). Of the two sums of an entry
+    // on a diagonal block, that with the row of the larger index.
+    const unsigned int n = 3 * n_scalar;
+    for (unsigned int k = 0; k < n_scalar; ++k)
+      for (unsigned int l = 0; l <= k; ++l)
+        for (unsigned int ci = 0; ci < 3; ++ci)
+          for (unsigned int cj = 0; cj < 3; ++cj)
+            {
+              const unsigned int i = index[ci * n_scalar + k];
+              const unsigned int j = index[cj * n_scalar + l];
+              if (k == l && i < j)
+                continue;
+              const unsigned int from =
+                block_size * pair_index(k, l) + 3 * cj + ci;
+              copies.push_back({i * n + j, from});
+              if (i != j)
+                copies.push_back({j * n + i, from});
+            }
   }
 
   void
@@ -194,22 +213,10 @@ namespace RestShape
   void
   ElasticCell::matrix(FullMatrix<double> &M) const
   {
-    // Entry (ci, k), (cj, l) of the pair k >= l is sum_K v_l[K][cj][ci]
-    // b_k[K]: the sum with the row of (ci, k). Of the two sums of an entry
-    // on a diagonal block, that with the row of the larger index.
-    for (unsigned int k = 0; k < n_scalar; ++k)
-      for (unsigned int l = 0; l <= k; ++l)
-        {
-          const double *block = &blocks[block_size * pair_index(k, l)];
-          for (unsigned int ci = 0; ci < 3; ++ci)
-            for (unsigned int cj = 0; cj < 3; ++cj)
-              {
-                const unsigned int i = index[ci * n_scalar + k];
-                const unsigned int j = index[cj * n_scalar + l];
-                if (k == l && i < j)
-                  continue;
-                M(i, j) = M(j, i) = block[3 * cj + ci];
-              }
-        }
+    AssertDimension(M.m(), 3 * n_scalar);
+    double *const       m   = &M(0, 0);
+    const double *const all = blocks.data();
+    for (const auto &[to, from] : copies)
+      m[to] = all[from];
   }
 } // namespace RestShape

@@ -214,10 +214,13 @@ namespace RestShape
     // Where the load is conservative its assembled tangent is symmetric,
     // and so is the sum of the faces' symmetric parts: the exact tangent
     // for the symmetric solvers.
+    double *const       cell = &c.cell_matrix(0, 0);
+    const double *const face = &K(0, 0);
     for (unsigned int i = 0; i < n_dofs; ++i)
       for (unsigned int j = 0; j < n_dofs; ++j)
-        c.cell_matrix(i, j) +=
-          is_symmetric ? 0.5 * (K(i, j) + K(j, i)) : K(i, j);
+        cell[i * n_dofs + j] +=
+          is_symmetric ? 0.5 * (face[i * n_dofs + j] + face[j * n_dofs + i]) :
+                         face[i * n_dofs + j];
   }
 
   void
@@ -256,32 +259,39 @@ namespace RestShape
     // da_j = e_cj x (F (N x grad phi_j)) dA (cofactor_derivative): the
     // product F (N x g) once per scalar function, the rows only of the
     // shape functions that do not vanish at the point (those of the face).
+    // Each entry gets one product per point, as before the loops were
+    // turned: the same sums.
     const Tensor<1, 3> grad_p = load->pressure_gradient(c.load, x, face);
     const std::vector<unsigned int> &scalar = c.d.scalar_functions();
-    std::array<Tensor<1, 3>, max_scalar_functions>     h;
-    std::array<unsigned int, 3 * max_scalar_functions> rows;
-    unsigned int                                       n_rows = 0;
+    std::array<Tensor<1, 3>, max_scalar_functions> h;
     AssertThrow(fv.n_scalar_functions() <= max_scalar_functions,
                 ExcInternalError());
     for (unsigned int k = 0; k < fv.n_scalar_functions(); ++k)
       h[k] = F * cross_product_3d(N, fv.scalar_shape_grad(k, q));
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      if (fv.shape_value(i, q) != 0)
-        rows[n_rows++] = i;
+    // The traction's derivative by each shape function j, by component.
+    std::array<std::array<double, 3 * max_scalar_functions>, 3> dt;
     for (unsigned int j = 0; j < n_dofs; ++j)
       {
         const unsigned int cj    = component[j];
         const double       phi_j = fv.shape_value(j, q);
         Tensor<1, 3>       e;
         e[cj] = 1;
-        const Tensor<1, 3> dt =
+        const Tensor<1, 3> dt_j =
           grad_p[cj] * phi_j * a + p * cross_product_3d(e, h[scalar[j]]) * dA;
-        for (unsigned int r = 0; r < n_rows; ++r)
-          {
-            const unsigned int i = rows[r];
-            s.face_matrix(i, j) += fv.shape_value(i, q) * dt[component[i]];
-          }
+        for (unsigned int cc = 0; cc < 3; ++cc)
+          dt[cc][j] = dt_j[cc];
       }
+    // Each row of a function that does not vanish at the point: one
+    // contiguous sum over the columns.
+    double *const matrix = &s.face_matrix(0, 0);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      if (const double phi_i = fv.shape_value(i, q); phi_i != 0)
+        {
+          double *const       row    = matrix + i * n_dofs;
+          const double *const by_dof = dt[component[i]].data();
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            row[j] += phi_i * by_dof[j];
+        }
   }
 
   Tensor<1, 3>

@@ -15,6 +15,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <utility>
 #include <vector>
 
 namespace RestShape
@@ -95,6 +96,9 @@ namespace RestShape
     /// Per pair k >= l of scalar functions, 10 entries [3 cj + ci] (9 used):
     /// the tangent's entry of (ci, k), (cj, l).
     std::vector<double> blocks;
+    /// Each entry of the cell matrix (row-major) and where in blocks it
+    /// is: the matrix is a gather.
+    std::vector<std::pair<unsigned int, unsigned int>> copies;
     /// By (component c, scalar k), c * n_scalar + k.
     std::vector<double> rhs, external, magnitude;
   };
