@@ -22,9 +22,13 @@ namespace RestShape
     const unsigned int               n_dofs    = context.fe.n_dofs_per_cell();
     const std::vector<unsigned int> &component = c.d.components();
     const FaceScratch               &s         = c.scratch;
-    // The shape functions of a cell: 81 for Q2 hexahedra, the most there is.
-    std::array<unsigned int, 81> rows;
-    AssertThrow(n_dofs <= rows.size(), ExcInternalError());
+    // The shape functions of a cell: 81 for Q2 hexahedra, the most there
+    // is; by component, those that do not vanish at a point (the face's).
+    constexpr unsigned int                            max_dofs = 81;
+    std::array<std::array<unsigned int, max_dofs>, 3> rows;
+    std::array<std::array<double, max_dofs>, 3>       values;
+    AssertThrow(n_dofs <= max_dofs, ExcInternalError());
+    double *const matrix = c.matrix ? &c.cell_matrix(0, 0) : nullptr;
     for (const unsigned int f : c.cell->face_indices())
       if (c.cell->face(f)->at_boundary())
         {
@@ -35,24 +39,26 @@ namespace RestShape
               const double       JxW =
                 rest_area(s.face_grad_w[q], fv.normal_vector(q)) * fv.JxW(q);
               c.energy += 0.5 * k * u_rest.norm_square() * JxW;
-              // The shape functions that do not vanish at the point: those
-              // of the face.
-              unsigned int n_rows = 0;
+              std::array<unsigned int, 3> n_rows = {{0, 0, 0}};
               for (unsigned int i = 0; i < n_dofs; ++i)
-                if (fv.shape_value(i, q) != 0)
-                  rows[n_rows++] = i;
-              for (unsigned int r = 0; r < n_rows; ++r)
-                {
-                  const unsigned int i   = rows[r];
-                  const unsigned int ci  = component[i];
-                  const double       phi = fv.shape_value(i, q);
-                  c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
-                  if (c.matrix)
-                    for (unsigned int t = 0; t < n_rows; ++t)
-                      if (const unsigned int j = rows[t]; component[j] == ci)
-                        c.cell_matrix(i, j) +=
-                          k * phi * fv.shape_value(j, q) * JxW;
-                }
+                if (const double phi = fv.shape_value(i, q); phi != 0)
+                  {
+                    const unsigned int ci    = component[i];
+                    rows[ci][n_rows[ci]]     = i;
+                    values[ci][n_rows[ci]++] = phi;
+                    c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
+                  }
+              if (matrix == nullptr)
+                continue;
+              // k phi_i phi_j dA between functions of one component.
+              for (unsigned int ci = 0; ci < 3; ++ci)
+                for (unsigned int r = 0; r < n_rows[ci]; ++r)
+                  {
+                    double *const row = matrix + rows[ci][r] * n_dofs;
+                    const double  phi = values[ci][r];
+                    for (unsigned int t = 0; t < n_rows[ci]; ++t)
+                      row[rows[ci][t]] += k * phi * values[ci][t] * JxW;
+                  }
             }
         }
   }
