@@ -27,6 +27,48 @@ using namespace RestShape::Test;
 
 namespace
 {
+  /// The largest differences between ours and deal.II's values on the
+  /// cells or faces seen so far.
+  struct Differences
+  {
+    double value = 0, gradient = 0, jxw = 0, point = 0;
+    double largest_gradient = 0; // of deal.II's
+
+    /// Compare at every point of the current cell or face.
+    template <typename Ours, typename Theirs>
+    void
+    add(const Ours &ours, const Theirs &theirs, const unsigned int n_dofs)
+    {
+      for (unsigned int q = 0; q < theirs.n_quadrature_points; ++q)
+        {
+          jxw   = std::max(jxw, std::abs(ours.JxW(q) - theirs.JxW(q)));
+          point = std::max(
+            point,
+            (ours.quadrature_point(q) - theirs.quadrature_point(q)).norm());
+          for (unsigned int k = 0; k < n_dofs; ++k)
+            {
+              value    = std::max(value,
+                               std::abs(ours.shape_value(k, q) -
+                                        theirs.shape_value(k, q)));
+              gradient = std::max(
+                gradient,
+                (ours.shape_grad(k, q) - theirs.shape_grad(k, q)).norm());
+              largest_gradient =
+                std::max(largest_gradient, theirs.shape_grad(k, q).norm());
+            }
+        }
+    }
+
+    void
+    check(const std::string &name) const
+    {
+      check_below(name + ": shape values, |difference|", value, 0);
+      check_below(name + ": shape gradients, |difference|", gradient, 0);
+      check_below(name + ": JxW, |difference|", jxw, 0);
+      check_below(name + ": quadrature points, |difference|", point, 0);
+    }
+  };
+
   void
   check_degree(const Triangulation<3> &mesh, const unsigned int degree)
   {
@@ -39,40 +81,17 @@ namespace
                           update_values | update_gradients | update_JxW_values |
                             update_quadrature_points);
     SimplexValues          values(fe, quadrature);
-    double                 value = 0, gradient = 0, jxw = 0, point = 0;
-    double                 largest_gradient = 0;
+    Differences            differences;
     for (const auto &cell : mesh.active_cell_iterators())
       {
         fe_values.reinit(cell);
         values.reinit(cell);
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          {
-            jxw   = std::max(jxw, std::abs(values.JxW(q) - fe_values.JxW(q)));
-            point = std::max(point,
-                             (values.quadrature_point(q) -
-                              fe_values.quadrature_point(q))
-                               .norm());
-            for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
-              {
-                value    = std::max(value,
-                                 std::abs(values.shape_value(k, q) -
-                                          fe_values.shape_value(k, q)));
-                gradient = std::max(gradient,
-                                    (values.shape_grad(k, q) -
-                                     fe_values.shape_grad(k, q))
-                                      .norm());
-                largest_gradient =
-                  std::max(largest_gradient, fe_values.shape_grad(k, q).norm());
-              }
-          }
+        differences.add(values, fe_values, fe.n_dofs_per_cell());
       }
     const std::string name = "P" + std::to_string(degree);
-    check_below(name + ": shape values, |difference|", value, 0);
-    check_below(name + ": shape gradients, |difference|", gradient, 0);
-    check_below(name + ": JxW, |difference|", jxw, 0);
-    check_below(name + ": quadrature points, |difference|", point, 0);
+    differences.check(name);
     check_below(name + ": gradients > 1 on cells < 1 (a test of something)",
-                -largest_gradient,
+                -differences.largest_gradient,
                 -1);
   }
 
@@ -89,9 +108,9 @@ namespace
                                 update_JxW_values | update_quadrature_points |
                                 update_normal_vectors);
     SimplexFaceValues      values(fe, quadrature);
-    double       value = 0, gradient = 0, jxw = 0, point = 0, normal = 0;
-    double       area   = 0;
-    unsigned int turned = 0; // faces not in the standard orientation
+    Differences            differences;
+    double                 normal = 0, area = 0;
+    unsigned int           turned = 0; // faces not in the standard orientation
     for (const auto &cell : mesh.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
@@ -99,34 +118,17 @@ namespace
           values.reinit(cell, f);
           turned += !cell->face_orientation(f) || cell->face_flip(f) ||
                     cell->face_rotation(f);
+          differences.add(values, fe_values, fe.n_dofs_per_cell());
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              jxw = std::max(jxw, std::abs(values.JxW(q) - fe_values.JxW(q)));
               area += values.JxW(q);
-              point  = std::max(point,
-                               (values.quadrature_point(q) -
-                                fe_values.quadrature_point(q))
-                                 .norm());
               normal = std::max(
                 normal,
                 (values.normal_vector(q) - fe_values.normal_vector(q)).norm());
-              for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
-                {
-                  value    = std::max(value,
-                                   std::abs(values.shape_value(k, q) -
-                                            fe_values.shape_value(k, q)));
-                  gradient = std::max(gradient,
-                                      (values.shape_grad(k, q) -
-                                       fe_values.shape_grad(k, q))
-                                        .norm());
-                }
             }
         }
     const std::string name = "P" + std::to_string(degree) + " faces";
-    check_below(name + ": shape values, |difference|", value, 0);
-    check_below(name + ": shape gradients, |difference|", gradient, 0);
-    check_below(name + ": JxW, |difference|", jxw, 0);
-    check_below(name + ": quadrature points, |difference|", point, 0);
+    differences.check(name);
     check_below(name + ": normals, |difference|", normal, 0);
     check_below(name + ": area > 0 (a test of something)", -area, -1e-3);
     check_below(name + ": faces in other orientations (of every kind)",
