@@ -13,9 +13,13 @@
 # a named cause in summary.json. Anything else is a defect: a converged
 # state with nodes outside or conditions that do not hold, a crash, NaN,
 # exit 2 without a cause, a run over LIMIT seconds (our limit, not the
-# program's). Prints a markdown table (Newton steps, load steps, active
-# nodes, seconds) and writes it to $OUT/contact_stress.md; exits 1 on a
-# defect.
+# program's). Each case is also solved without the skull (Contact/Obstacle
+# file empty, the same loads and supports): the table gives both Newton
+# step counts and their ratio, the cost of contact in Newton steps, and
+# the last line the ratio of the sums over the converged cases. Prints a
+# markdown table (Newton steps, load steps, active nodes, seconds) and
+# writes it to $OUT/contact_stress.md; exits 1 on a defect, or with
+# --coarse if that ratio exceeds MAX_STEP_RATIO.
 #
 # usage: benchmarks/contact_stress/run.sh [--coarse]
 #   --coarse: P1, both skulls, 1 and 2 g along +-x (8 cases, under a
@@ -23,7 +27,8 @@
 #             clean stop is test run/brain_full_weight_warned).
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
 # contact_stress), SKULLS, LOADS, DEGREES, LIMIT (600), SET (one extra
-# 'Section/Parameter=value' for every case). Run from the repository root.
+# 'Section/Parameter=value' for every case), MAX_STEP_RATIO (6; --coarse
+# only). Run from the repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/contact_stress}
@@ -35,7 +40,10 @@ done
 loads=${LOADS:-$all_loads full}
 degrees=${DEGREES:-1 2}
 limit=${LIMIT:-600}
+max_step_ratio=${MAX_STEP_RATIO:-6}
+coarse=false
 if [ "${1:-}" = --coarse ]; then
+  coarse=true
   loads=${LOADS:-1+x 1-x 2+x 2-x}
   degrees=${DEGREES:-1}
 fi
@@ -59,33 +67,42 @@ gravity() {
   esac
 }
 
+# solve DIR LOAD P SKULL [extra --set arguments]: one forward solve, its
+# screen output in DIR.log; returns the program's exit code.
+solve() {
+  local dir=$1 load=$2 p=$3 skull=$4 fluid=1007
+  shift 4
+  [ "$load" = full ] && fluid=0
+  rm -rf "$dir"
+  timeout "$limit" "$exe" --set "Output/Directory=$dir" \
+    --set "Inverse problem/Enabled=false" \
+    --set "Scenario/Enabled=false" \
+    --set "Loads/Surface pressure=0" \
+    --set "Loads/Fluid density=$fluid" \
+    --set "Loads/Gravity=$(gravity "$load")" \
+    --set "Discretization/Polynomial degree=$p" \
+    --set "Output/Write VTU=false" ${SET:+--set "$SET"} "$@" \
+    "prm/brain_skull_$skull.prm" >"$dir.log" 2>&1
+}
+
 table=$out/contact_stress.md
 {
   echo "machine: $(machine)"
   echo
-  echo "| skull | load | P | result | Newton steps | load steps | active nodes | nodes outside | seconds | cause |"
-  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  echo "| skull | load | P | result | Newton steps | without contact | ratio | load steps | active nodes | nodes outside | seconds | cause |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 } >"$table"
 cat "$table"
 defects=0
+sum_with=0
+sum_without=0
 for p in $degrees; do
   for skull in $skulls; do
     for load in $loads; do
       name=${skull}_${load}_p$p
       dir=$out/$name
-      rm -rf "$dir"
-      fluid=1007
-      [ "$load" = full ] && fluid=0
       start=$(date +%s.%N)
-      timeout "$limit" "$exe" --set "Output/Directory=$dir" \
-        --set "Inverse problem/Enabled=false" \
-        --set "Scenario/Enabled=false" \
-        --set "Loads/Surface pressure=0" \
-        --set "Loads/Fluid density=$fluid" \
-        --set "Loads/Gravity=$(gravity "$load")" \
-        --set "Discretization/Polynomial degree=$p" \
-        --set "Output/Write VTU=false" ${SET:+--set "$SET"} \
-        "prm/brain_skull_$skull.prm" >"$out/$name.log" 2>&1
+      solve "$dir" "$load" "$p" "$skull"
       code=$?
       seconds=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", e - s }')
       summary=$dir/summary.json
@@ -99,7 +116,7 @@ for p in $degrees; do
         [ -z "$cause" ] && result="DEFECT: exit 2 without a cause"
       elif [ $code -ne 0 ]; then
         result="DEFECT: exit code $code"
-        cause=$(tail -n 1 "$out/$name.log" | cut -c1-160)
+        cause=$(tail -n 1 "$dir.log" | cut -c1-160)
       fi
       if [ -f "$summary" ] && grep -qiE '(^|[^a-z])(nan|inf)([^a-z]|$)' "$summary"; then
         result="DEFECT: NaN or inf in summary.json"
@@ -115,11 +132,28 @@ for p in $degrees; do
           result="DEFECT: converged with the contact conditions violated"
         fi
       fi
+      # The same solve without the skull.
+      without=-; ratio=-
+      if [ "$result" = converged ] &&
+        solve "$dir.free" "$load" "$p" "$skull" --set "Contact/Obstacle file="; then
+        without=$(value newton_iterations "$dir.free/summary.json")
+        ratio=$(awk -v a="$newton" -v b="$without" 'BEGIN { printf "%.1f", a / b }')
+        sum_with=$((sum_with + newton))
+        sum_without=$((sum_without + without))
+      fi
       case $result in DEFECT*) defects=$((defects + 1)) ;; esac
-      echo "| $skull | $load | $p | $result | ${newton:--} | ${steps:--} | ${active:--} | ${outside:--} | $seconds | $cause |" | tee -a "$table"
+      echo "| $skull | $load | $p | $result | ${newton:--} | $without | $ratio | ${steps:--} | ${active:--} | ${outside:--} | $seconds | $cause |" | tee -a "$table"
     done
   done
 done
 echo
 echo "defects: $defects"
-[ $defects -eq 0 ]
+[ $defects -eq 0 ] || exit 1
+[ $sum_without -gt 0 ] || exit 0
+ratio=$(awk -v a=$sum_with -v b=$sum_without 'BEGIN { printf "%.2f", a / b }')
+echo "Newton steps with / without contact, converged cases: $sum_with / $sum_without = $ratio" |
+  tee -a "$table"
+if $coarse && awk -v r="$ratio" -v m="$max_step_ratio" 'BEGIN { exit !(r > m) }'; then
+  echo "contact costs more than $max_step_ratio times the Newton steps of the solves without it"
+  exit 1
+fi

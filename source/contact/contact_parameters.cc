@@ -58,21 +58,32 @@ namespace RestShape
       "little when held and go through when released; this accepts it "
       "held. 0: the Newton tolerance times the load (round-off).");
     prm.declare_entry("Active set constant",
-                      "100",
+                      "1",
                       Patterns::Double(0),
                       "c in the complementarity function max(0, p - c g) of "
                       "the primal-dual active set, as a multiple of E_max / h "
                       "(largest Young's modulus over the smallest cell "
-                      "diameter), so that c g is a pressure in Pa.");
-    prm.declare_entry("Free active-set updates",
-                      "10",
-                      Patterns::Integer(1),
-                      "Active-set updates per solve in which nodes may be "
-                      "released; afterwards the set only grows (and nodes "
-                      "that pull on the obstacle are released once Newton has "
-                      "converged). Lower it (e.g. 4) for large contact zones "
-                      "on curved obstacles, where the set otherwise wanders "
-                      "(the brain).");
+                      "diameter), so that c g is a pressure in Pa. It "
+                      "decides only when an active node that a step left "
+                      "off the obstacle (g > 0) is released: when its "
+                      "pressure is below c g. 1: the stress E_max g / h of "
+                      "a cell strained by g / h; larger values release nodes "
+                      "that slide over the curved obstacle by a fraction of "
+                      "the gap tolerance, and the set takes more Newton "
+                      "steps to settle (100: 2.9 times as many on the "
+                      "brain, doc/contact.md). Every converged state meets "
+                      "the same contact conditions whatever the value.");
+    prm.declare_entry(
+      "Free active-set updates",
+      "10",
+      Patterns::Integer(1),
+      "Active-set updates per solve in which nodes may be "
+      "released; afterwards the set only grows (and nodes "
+      "that pull on the obstacle are released at the Newton "
+      "steps whose residual is below the load, and once Newton "
+      "has converged). Lower it (e.g. 4) for large contact zones "
+      "on curved obstacles, where the set otherwise wanders "
+      "(the brain).");
     prm.declare_entry(
       "Maximum outside fraction",
       "0.05",

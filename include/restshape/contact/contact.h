@@ -181,8 +181,10 @@ namespace RestShape
       const dealii::AffineConstraints<double> &base) const override;
 
     /**
-     * Called when Newton has converged with releases frozen (cycling, or
-     * more than Contact/Free active-set updates in this solve): if the
+     * Called while releases are frozen (cycling, or more than Contact/Free
+     * active-set updates in this solve), at the top of a Newton step whose
+     * residual is below the load and whose active set did not change, and
+     * when Newton has converged: if the
      * active nodes that pull on the obstacle (tensile contact force) carry
      * more than 0.1 % of the total contact force, exactly those are released
      * (they come back only if they go through the obstacle) and true is
@@ -218,9 +220,11 @@ namespace RestShape
      * node and held plane that pulls by more than @p force_tolerance
      * (and Contact/Pull tolerance times its area) (grazing nodes too: they come
      * back only through the obstacle), let nodes on fixed planes that left the
-     * surface follow it again, and start a free phase of the active set (Free
-     * active-set updates) from there. Returns whether it changed anything (then
-     * Newton goes on).
+     * surface follow it again. Releases stay frozen for the rest of the
+     * solve: the nodes released here come back only through the obstacle,
+     * and the others are released once Newton has converged (or from
+     * |R| <= |f|, thaw_if_adhesive()). Returns whether it changed
+     * anything (then Newton goes on).
      */
     bool
     enforce_conditions(const ContactConditions &violated,
@@ -231,10 +235,7 @@ namespace RestShape
      * Whether the rounds of enforce_conditions() cycle ("" while they do
      * not, else what repeats): a converged state (active nodes, held
      * planes, violations) came back in a later round of this solve. Newton
-     * then fails, and load stepping takes a smaller increment. (Nodes that
-     * an earlier round released for pulling and that come back and are
-     * released again end the free phases: from then on nodes are released
-     * only once Newton has converged.)
+     * then fails, and load stepping takes a smaller increment.
      */
     const std::string &
     cycle_text() const override
@@ -337,9 +338,6 @@ namespace RestShape
       bool   eligible    = false;
       bool   active      = false;
       bool   pulled      = false; // released by thaw_if_adhesive()
-      /// Released by enforce_conditions() in this solve (a repeat is a
-      /// cycle of its rounds).
-      bool strictly_released = false;
       /// Carried off the surface by its planes: it follows the surface's
       /// distance along their mean normal for the rest of the solve.
       bool follow_surface = false;
@@ -456,11 +454,8 @@ namespace RestShape
     /// of enforce_conditions()) since the last update.
     bool         constraints_changed = false;
     unsigned int n_updates = 0, n_thaws = 0;
-    /// Active-set updates of the current free phase (Free active-set
-    /// updates, doubled for each round of enforce_conditions() that
-    /// repeats an earlier one) and the description of a cycle.
-    unsigned int free_updates = 0;
-    std::string  cycle;
+    /// The description of a cycle of enforce_conditions()'s rounds.
+    std::string cycle;
     /// Signatures of the converged states of this solve's rounds.
     std::set<std::size_t> rounds;
     /// The active nodes (with their held planes) and the violations.
