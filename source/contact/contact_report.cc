@@ -83,7 +83,8 @@ namespace RestShape
     return ", contact " + std::to_string(n_active()) + " active (+" +
            std::to_string(n_added) + " new, -" + std::to_string(n_released) +
            " released)" +
-           (releases_frozen ? " [no releases until Newton converges]" : "");
+           (releases_frozen ? " [frozen: only nodes that pull are released]" :
+                              "");
   }
 
   unsigned int
