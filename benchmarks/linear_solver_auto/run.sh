@@ -15,6 +15,12 @@
 #             cutting skull made here by restshape-mesh as
 #             meshes/brain_tracts.sh makes the scene's, 0.5 mm into the
 #             brain; P1, and P2 without contact;
+#   small_cavity, small_hertz, small_block, small_tube
+#             where the two cross, below the coarse brain: the contact
+#             scenes prm/cantilever_in_cavity.prm, prm/hertz.prm,
+#             prm/block_on_floor.prm and prm/column.prm inside
+#             meshes/column_tube.off, P1 and P2, 567 to 28,611 DoFs; each
+#             run REPEATS times (3), the shortest wall time counts;
 # no scenario, no VTU. Prints wall seconds, the seconds of the solves
 # (linear solves; the whole direct inverse), Newton steps (the direct
 # inverse's steps and Jacobian products), the largest displacement, peak
@@ -32,11 +38,14 @@
 #             inverse (the tests' version)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
 # linear_solver_auto), SERIES ("free contact inverse tracts_free
-# tracts_contact tracts_inverse"). Run from the repository root.
+# tracts_contact tracts_inverse small_cavity small_hertz small_block
+# small_tube"), REPEATS (3, for the small series). Run from the
+# repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/linear_solver_auto}
-series=${SERIES:-free contact inverse tracts_free tracts_contact tracts_inverse}
+series=${SERIES:-free contact inverse tracts_free tracts_contact tracts_inverse small_cavity small_hertz small_block small_tube}
+repeats=${REPEATS:-3}
 [ "${1:-}" = --coarse ] && series=${SERIES:-free contact inverse}
 coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
@@ -51,6 +60,14 @@ cases() {
     echo "1:0 1:1 1:2 2:0"
   elif [ "$1" = tracts_free ]; then
     echo "1:0 2:0"
+  elif [ "$1" = small_cavity ]; then
+    echo "1:0 1:1 2:0 2:1"
+  elif [ "$1" = small_hertz ]; then
+    echo "1:0 2:0"
+  elif [ "$1" = small_block ]; then
+    echo "1:2 2:1 2:2"
+  elif [ "$1" = small_tube ]; then
+    echo "1:1 1:2 2:1"
   elif [ "${1#tracts}" != "$1" ]; then
     echo "1:0"
   else
@@ -100,6 +117,12 @@ run() {
       scene=$out/tracts/contact.prm
       extra=(--set "Inverse problem/Enabled=false") ;;
     tracts_inverse) scene=prm/brain_tracts.prm extra=() ;;
+    small_cavity) scene=prm/cantilever_in_cavity.prm extra=() ;;
+    small_hertz) scene=prm/hertz.prm extra=() ;;
+    small_block) scene=prm/block_on_floor.prm extra=() ;;
+    small_tube)
+      scene=prm/column.prm
+      extra=(--set "Contact/Obstacle file=meshes/column_tube.off") ;;
   esac
   /usr/bin/time -f "%M" -o "$5.mem" "$exe" \
     --set "Scenario/Enabled=false" --set "Output/Write VTU=false" \
@@ -118,8 +141,17 @@ for s in $series; do
     p=${c%:*} r=${c#*:}
     for solver in direct cg-amg; do
       dir=$out/${s}_p${p}_r${r}_$solver
-      rm -rf "$dir"
-      run "$s" "$p" "$r" "$solver" "$dir" || status=1
+      # The small series: the shortest of several runs (each well under
+      # a second, where another process's moment counts).
+      n=1
+      [ "${s#small}" != "$s" ] && n=$repeats
+      best=
+      for ((i = 0; i < n; ++i)); do
+        rm -rf "$dir"
+        run "$s" "$p" "$r" "$solver" "$dir" || status=1
+        w=$(value wall_seconds "$dir/summary.json")
+        best=$(awk -v a="$best" -v b="$w" 'BEGIN { print (a == "" || b < a) ? b : a }')
+      done
       json=$dir/summary.json
       if [ "$(value converged "$json")" != true ]; then
         echo "FAIL: $s P$p r$r $solver did not converge ($dir.log)"
@@ -129,7 +161,7 @@ for s in $series; do
         echo "FAIL: $s P$p r$r $solver: the contact conditions do not hold"
         status=1
       fi
-      wall=$(value wall_seconds "$json")
+      wall=$best
       mb=$(awk '{ printf "%.0f", $1 / 1024 }' "$dir.mem")
       u=$(value max_displacement_mm "$json")
       e=$(value potential_energy_J "$json")

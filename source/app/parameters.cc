@@ -52,7 +52,6 @@ namespace RestShape
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);
     contact.parse_parameters(prm);
-    forward.obstacle = contact.enabled();
     inverse.parse_parameters(prm);
     // The scenarios' fluid levels are given in the mesh's length unit.
     std::vector<std::string> names = {""};

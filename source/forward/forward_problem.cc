@@ -112,7 +112,7 @@ namespace RestShape
       return parameters.solver.linear_solver;
     const types::global_dof_index n      = dof_handler_.n_dofs();
     const unsigned int            degree = parameters.discretization.degree;
-    const unsigned int limit = auto_direct_dofs(degree, parameters.obstacle);
+    const unsigned int            limit  = auto_direct_dofs(degree);
     // A direction that no fixed label holds leaves the tangent singular
     // until contact or the support acts: CG cannot solve that, the direct
     // solver can.
@@ -125,8 +125,7 @@ namespace RestShape
           << (chosen == LinearSolverType::direct ? "direct" : "cg-amg")
           << " for " << n << " DoFs ("
           << (all_held ? "direct up to " + std::to_string(limit) +
-                           " for degree " + std::to_string(degree) +
-                           (parameters.obstacle ? " with an obstacle" : "") :
+                           " for degree " + std::to_string(degree) :
                          std::string("a direction no fixed label holds"))
           << ")" << std::endl;
     return chosen;

@@ -20,8 +20,8 @@ namespace RestShape
       "Linear solver",
       "auto",
       Patterns::Selection("auto|direct|cg-amg"),
-      "auto: direct up to 4000 DoFs with linear elements (8000 with an "
-      "obstacle) and 50000 with quadratic ones, or when some direction is "
+      "auto: direct up to 2500 DoFs with linear elements and 8000 with "
+      "quadratic ones (with or without contact), or when some direction is "
       "held by no fixed label; "
       "cg-amg otherwise (the run says which it took). "
       "direct: sparse LU (MUMPS through Trilinos Amesos). "

@@ -39,9 +39,6 @@ namespace RestShape
     /// A later phase (a scenario) sets a pressure where the scene has none:
     /// a follower pressure's tangent is then not symmetric from the start.
     bool pressure_set_later = false;
-    /// The scene has an obstacle (Contact/Obstacle file): Linear solver =
-    /// auto keeps the direct solver longer (auto_direct_dofs()).
-    bool obstacle = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

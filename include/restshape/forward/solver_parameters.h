@@ -31,26 +31,20 @@ namespace RestShape
   };
 
   /// Linear solver = auto: the direct solver up to this many DoFs, by the
-  /// element degree and whether there is an obstacle (benchmarks/
-  /// linear_solver_auto, doc/benchmarks.md section 3). Linear elements:
-  /// CG + AMG takes 0.92 (free) and 0.71 (inverse) of the direct solver's
-  /// time at 3.6k DoFs but 3.4 times as long with contact (its inexact
-  /// steps change the active set: 179 Newton steps against 27); at 12k
-  /// it takes 0.65, 0.80 and 0.45 (contact). The contact series crosses
-  /// near 7.5k, the others below 3.6k. Quadratic elements: at 25k DoFs
-  /// 0.91 (free), 0.79 (contact), 1.20 (inverse); at 91k 0.51 (free).
-  constexpr unsigned int auto_direct_dofs_linear         = 4000;
-  constexpr unsigned int auto_direct_dofs_linear_contact = 8000;
-  constexpr unsigned int auto_direct_dofs_quadratic      = 50000;
+  /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md
+  /// section 3). Linear elements: CG + AMG takes 1.0 to 2.1 of the direct
+  /// solver's wall time at 567 to 1,443 DoFs, 0.69 to 0.81 from 3,075 on,
+  /// with contact as without (forward, inverse and contact solves alike).
+  /// Quadratic elements: 0.97 to 1.70 at 3,075 to 5,103 DoFs, 0.44 to 0.96
+  /// from 10,275 on.
+  constexpr unsigned int auto_direct_dofs_linear    = 2500;
+  constexpr unsigned int auto_direct_dofs_quadratic = 8000;
 
-  /// The limit of Linear solver = auto for elements of @p degree, with or
-  /// without an obstacle (@p contact).
+  /// The limit of Linear solver = auto for elements of @p degree.
   constexpr unsigned int
-  auto_direct_dofs(const unsigned int degree, const bool contact)
+  auto_direct_dofs(const unsigned int degree)
   {
-    return degree > 1 ? auto_direct_dofs_quadratic :
-           contact    ? auto_direct_dofs_linear_contact :
-                        auto_direct_dofs_linear;
+    return degree > 1 ? auto_direct_dofs_quadratic : auto_direct_dofs_linear;
   }
 
   /// Solver/Watchdog steps (benchmarks/peer, doc/benchmarks.md).
