@@ -15,12 +15,14 @@
 #             cutting skull made here by restshape-mesh as
 #             meshes/brain_tracts.sh makes the scene's, 0.5 mm into the
 #             brain; P1, and P2 without contact;
-#   small_cavity, small_hertz, small_block, small_tube
+#   small_cavity, small_hertz, small_block, small_tube, cantilever_free
 #             where the two cross, below the coarse brain: the contact
 #             scenes prm/cantilever_in_cavity.prm, prm/hertz.prm,
 #             prm/block_on_floor.prm and prm/column.prm inside
-#             meshes/column_tube.off, P1 and P2, 567 to 28,611 DoFs; each
-#             run REPEATS times (3), the shortest wall time counts;
+#             meshes/column_tube.off, P1 and P2, 567 to 28,611 DoFs, and
+#             the slender cantilever of prm/cantilever.prm (10:1, no
+#             contact); each run REPEATS times (3), the shortest wall time
+#             counts;
 # no scenario, no VTU. Prints wall seconds, the seconds of the solves
 # (linear solves; the whole direct inverse), Newton steps (the direct
 # inverse's steps and Jacobian products), the largest displacement, peak
@@ -39,12 +41,12 @@
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
 # linear_solver_auto), SERIES ("free contact inverse tracts_free
 # tracts_contact tracts_inverse small_cavity small_hertz small_block
-# small_tube"), REPEATS (3, for the small series). Run from the
-# repository root.
+# small_tube cantilever_free"), REPEATS (3, for the small series and
+# cantilever_free). Run from the repository root.
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/linear_solver_auto}
-series=${SERIES:-free contact inverse tracts_free tracts_contact tracts_inverse small_cavity small_hertz small_block small_tube}
+series=${SERIES:-free contact inverse tracts_free tracts_contact tracts_inverse small_cavity small_hertz small_block small_tube cantilever_free}
 repeats=${REPEATS:-3}
 [ "${1:-}" = --coarse ] && series=${SERIES:-free contact inverse}
 coarse=false
@@ -68,6 +70,8 @@ cases() {
     echo "1:2 2:1 2:2"
   elif [ "$1" = small_tube ]; then
     echo "1:1 1:2 2:1"
+  elif [ "$1" = cantilever_free ]; then
+    echo "1:1 1:2 2:0 2:1"
   elif [ "${1#tracts}" != "$1" ]; then
     echo "1:0"
   else
@@ -120,6 +124,7 @@ run() {
     small_cavity) scene=prm/cantilever_in_cavity.prm extra=() ;;
     small_hertz) scene=prm/hertz.prm extra=() ;;
     small_block) scene=prm/block_on_floor.prm extra=() ;;
+    cantilever_free) scene=prm/cantilever.prm extra=() ;;
     small_tube)
       scene=prm/column.prm
       extra=(--set "Contact/Obstacle file=meshes/column_tube.off") ;;
@@ -144,7 +149,7 @@ for s in $series; do
       # The small series: the shortest of several runs (each well under
       # a second, where another process's moment counts).
       n=1
-      [ "${s#small}" != "$s" ] && n=$repeats
+      [ "${s#small}" != "$s" ] || [ "$s" = cantilever_free ] && n=$repeats
       best=
       for ((i = 0; i < n; ++i)); do
         rm -rf "$dir"

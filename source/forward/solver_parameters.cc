@@ -20,7 +20,7 @@ namespace RestShape
       "Linear solver",
       "auto",
       Patterns::Selection("auto|direct|cg-amg"),
-      "auto: direct up to 2500 DoFs with linear elements and 8000 with "
+      "auto: direct up to 2500 DoFs with linear elements and 20000 with "
       "quadratic ones (with or without contact), or when some direction is "
       "held by no fixed label; "
       "cg-amg otherwise (the run says which it took). "

@@ -33,12 +33,13 @@ namespace RestShape
   /// Linear solver = auto: the direct solver up to this many DoFs, by the
   /// element degree (benchmarks/linear_solver_auto, doc/benchmarks.md
   /// section 3). Linear elements: CG + AMG takes 1.0 to 2.1 of the direct
-  /// solver's wall time at 567 to 1,443 DoFs, 0.69 to 0.81 from 3,075 on,
-  /// with contact as without (forward, inverse and contact solves alike).
-  /// Quadratic elements: 0.97 to 1.70 at 3,075 to 5,103 DoFs, 0.44 to 0.96
-  /// from 10,275 on.
+  /// solver's wall time at 567 to 1,443 DoFs, 0.46 to 0.81 from 3,075 on
+  /// on the brains and the compact scenes, with contact as without
+  /// (forward, inverse and contact solves alike); the slender cantilever
+  /// is the exception (1.7). Quadratic elements: 0.52 to 4.2 up to 19,683
+  /// DoFs (the cantilever's 4.2 and 3.1), 0.44 to 0.82 from 25,173 on.
   constexpr unsigned int auto_direct_dofs_linear    = 2500;
-  constexpr unsigned int auto_direct_dofs_quadratic = 8000;
+  constexpr unsigned int auto_direct_dofs_quadratic = 20000;
 
   /// The limit of Linear solver = auto for elements of @p degree.
   constexpr unsigned int
