@@ -100,6 +100,11 @@ namespace RestShape
                                      parameters.discretization.degree,
                                      &timer);
     linear_solver->set_symmetric(tangent_is_symmetric());
+    // auto's choice is a matter of speed: where CG + AMG fails, the direct
+    // solver, which it would have taken on a smaller mesh, takes over.
+    if (parameters.solver.linear_solver == LinearSolverType::automatic &&
+        linear_solver_type == LinearSolverType::cg_amg)
+      linear_solver->allow_direct_fallback();
     if (linear_solver_type == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
     newton_solver.setup(linear_solver.get(), linear_solver_type);

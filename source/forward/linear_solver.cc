@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #ifdef __GLIBC__
 #  include <malloc.h>
 #endif
@@ -73,13 +75,20 @@ namespace RestShape
                       const double      relative_tolerance)
   {
     last_matrix = &A;
-    if (parameters.linear_solver == LinearSolverType::cg_amg)
-      return solve_iteratively(A,
-                               x,
-                               b,
-                               relative_tolerance > 0 ?
-                                 relative_tolerance :
-                                 parameters.linear_tolerance);
+    if (!solves_prepared_exactly())
+      try
+        {
+          return solve_iteratively(A,
+                                   x,
+                                   b,
+                                   relative_tolerance > 0 ?
+                                     relative_tolerance :
+                                     parameters.linear_tolerance);
+        }
+      catch (const SolverFailure &failure)
+        {
+          fall_back(failure);
+        }
 
     solve_directly(A, x, b);
     for (const double v : x)
@@ -87,8 +96,37 @@ namespace RestShape
         throw SolverFailure("the direct solver (MUMPS) returned NaN: the "
                             "matrix is singular (check that the scene fixes "
                             "every rigid-body motion)");
-    last_method = "MUMPS";
+    last_method = fell_back ? "MUMPS after CG+AMG failed" : "MUMPS";
     return 1;
+  }
+
+  void
+  LinearSolver::allow_direct_fallback()
+  {
+    direct_fallback_allowed = true;
+  }
+
+  bool
+  LinearSolver::fell_back_to_direct() const
+  {
+    return fell_back;
+  }
+
+  void
+  LinearSolver::fall_back(const SolverFailure &failure)
+  {
+    if (!direct_fallback_allowed)
+      throw failure;
+    fell_back       = true;
+    fallback_reason = failure.what();
+    // Its advice (to set the direct solver) is what happens here.
+    fallback_reason = fallback_reason.substr(0, fallback_reason.find("; try"));
+    amg.reset();
+    amg_matrix = nullptr;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "  Linear solver: CG + AMG failed (" << fallback_reason
+                << "); the direct solver takes over for the rest of the run"
+                << std::endl;
   }
 
   void
@@ -174,7 +212,7 @@ namespace RestShape
   LinearSolver::prepare(const MatrixType &A)
   {
     last_matrix = &A;
-    if (parameters.linear_solver == LinearSolverType::cg_amg)
+    if (!solves_prepared_exactly())
       setup_amg(A, AmgSetup::as_configured);
     else
       factorise(A);
@@ -183,7 +221,7 @@ namespace RestShape
   bool
   LinearSolver::solves_prepared_exactly() const
   {
-    return parameters.linear_solver != LinearSolverType::cg_amg;
+    return parameters.linear_solver != LinearSolverType::cg_amg || fell_back;
   }
 
   void
@@ -215,11 +253,17 @@ namespace RestShape
     AssertThrow(last_matrix != nullptr,
                 ExcMessage("solve_prepared() needs a solve or prepare first"));
     if (!solves_prepared_exactly())
-      {
-        x = 0;
-        solve_iteratively(*last_matrix, x, b, tolerance);
-        return;
-      }
+      try
+        {
+          x = 0;
+          solve_iteratively(*last_matrix, x, b, tolerance);
+          return;
+        }
+      catch (const SolverFailure &failure)
+        {
+          fall_back(failure);
+          factorise(*last_matrix);
+        }
     if (symmetric_direct != nullptr)
       {
         x                = b;

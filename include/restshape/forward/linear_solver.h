@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <restshape/base/input_error.h>
 #include <restshape/forward/solver_parameters.h>
 
 #include <memory>
@@ -104,7 +105,18 @@ namespace RestShape
     /// The relative tolerance of solve_prepared() with CG + AMG.
     static constexpr double prepared_solve_tolerance = 1e-3;
 
-    /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG").
+    /// Linear solver = auto took CG + AMG: where CG and GMRES fail on a
+    /// system, solve it and every later one with the direct solver.
+    void
+    allow_direct_fallback();
+
+    /// Whether a failed iterative solve made this solver direct; why.
+    bool
+                fell_back_to_direct() const;
+    std::string fallback_reason;
+
+    /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG",
+    /// "MUMPS after CG+AMG failed").
     std::string last_method;
 
   private:
@@ -191,7 +203,13 @@ namespace RestShape
     double amg_iterations_per_decade = 0;
     bool   amg_stale                 = false;
 
-    const SolverParameters           parameters;
+    const SolverParameters parameters;
+    bool                   direct_fallback_allowed = false;
+    bool                   fell_back               = false;
+    /// Note the failure @p failure of an iterative solve and fall back to
+    /// the direct solver; rethrows it where that is not allowed.
+    void
+                                     fall_back(const SolverFailure &failure);
     const unsigned int               degree;
     bool                             symmetric = true;
     dealii::TimerOutput             *timer;
