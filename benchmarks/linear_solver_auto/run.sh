@@ -56,27 +56,17 @@ source "$(dirname "$0")/../common.sh"
 
 # cases SERIES: "degree:refinements" of a series.
 cases() {
-  if $coarse; then
-    echo "1:0"
-  elif [ "$1" = free ]; then
-    echo "1:0 1:1 1:2 2:0"
-  elif [ "$1" = tracts_free ]; then
-    echo "1:0 2:0"
-  elif [ "$1" = small_cavity ]; then
-    echo "1:0 1:1 2:0 2:1"
-  elif [ "$1" = small_hertz ]; then
-    echo "1:0 2:0"
-  elif [ "$1" = small_block ]; then
-    echo "1:2 2:1 2:2"
-  elif [ "$1" = small_tube ]; then
-    echo "1:1 1:2 2:1"
-  elif [ "$1" = cantilever_free ]; then
-    echo "1:1 1:2 2:0 2:1"
-  elif [ "${1#tracts}" != "$1" ]; then
-    echo "1:0"
-  else
-    echo "1:0 1:1 2:0"
-  fi
+  $coarse && { echo "1:0"; return; }
+  case $1 in
+    free) echo "1:0 1:1 1:2 2:0" ;;
+    tracts_free | small_hertz) echo "1:0 2:0" ;;
+    tracts_*) echo "1:0" ;;
+    small_cavity) echo "1:0 1:1 2:0 2:1" ;;
+    small_block) echo "1:2 2:1 2:2" ;;
+    small_tube) echo "1:1 1:2 2:1" ;;
+    cantilever_free) echo "1:1 1:2 2:0 2:1" ;;
+    *) echo "1:0 1:1 2:0" ;;
+  esac
 }
 
 # The tracts brain's cutting skull and its contact scene, in $out/tracts.
@@ -149,7 +139,7 @@ for s in $series; do
       # The small series: the shortest of several runs (each well under
       # a second, where another process's moment counts).
       n=1
-      [ "${s#small}" != "$s" ] || [ "$s" = cantilever_free ] && n=$repeats
+      case $s in small_* | cantilever_free) n=$repeats ;; esac
       best=
       for ((i = 0; i < n; ++i)); do
         rm -rf "$dir"

@@ -87,7 +87,9 @@ namespace RestShape
         }
       catch (const SolverFailure &failure)
         {
-          fall_back(failure);
+          if (!direct_fallback_allowed)
+            throw;
+          switch_to_direct(failure.what());
         }
 
     solve_directly(A, x, b);
@@ -106,25 +108,16 @@ namespace RestShape
     direct_fallback_allowed = true;
   }
 
-  bool
-  LinearSolver::fell_back_to_direct() const
-  {
-    return fell_back;
-  }
-
   void
-  LinearSolver::fall_back(const SolverFailure &failure)
+  LinearSolver::switch_to_direct(const std::string &reason)
   {
-    if (!direct_fallback_allowed)
-      throw failure;
-    fell_back       = true;
-    fallback_reason = failure.what();
-    // Its advice (to set the direct solver) is what happens here.
-    fallback_reason = fallback_reason.substr(0, fallback_reason.find("; try"));
+    fell_back = true;
     amg.reset();
     amg_matrix = nullptr;
+    // The failure's advice (to set the direct solver) is what happens here.
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << "  Linear solver: CG + AMG failed (" << fallback_reason
+      std::cout << "  Linear solver: CG + AMG failed ("
+                << reason.substr(0, reason.find("; try"))
                 << "); the direct solver takes over for the rest of the run"
                 << std::endl;
   }
@@ -261,7 +254,9 @@ namespace RestShape
         }
       catch (const SolverFailure &failure)
         {
-          fall_back(failure);
+          if (!direct_fallback_allowed)
+            throw;
+          switch_to_direct(failure.what());
           factorise(*last_matrix);
         }
     if (symmetric_direct != nullptr)

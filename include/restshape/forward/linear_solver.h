@@ -8,7 +8,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <restshape/base/input_error.h>
 #include <restshape/forward/solver_parameters.h>
 
 #include <memory>
@@ -110,11 +109,6 @@ namespace RestShape
     void
     allow_direct_fallback();
 
-    /// Whether a failed iterative solve made this solver direct; why.
-    bool
-                fell_back_to_direct() const;
-    std::string fallback_reason;
-
     /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG",
     /// "MUMPS after CG+AMG failed").
     std::string last_method;
@@ -127,6 +121,10 @@ namespace RestShape
                       const double      relative_tolerance);
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
+    /// Solve with the direct solver from now on, after an iterative solve
+    /// failed for @p reason (allow_direct_fallback()).
+    void
+    switch_to_direct(const std::string &reason);
     /// MUMPS's (symbolic, when A is new, and) numeric factorisation of A.
     void
     factorise(const MatrixType &A);
@@ -203,13 +201,9 @@ namespace RestShape
     double amg_iterations_per_decade = 0;
     bool   amg_stale                 = false;
 
-    const SolverParameters parameters;
-    bool                   direct_fallback_allowed = false;
-    bool                   fell_back               = false;
-    /// Note the failure @p failure of an iterative solve and fall back to
-    /// the direct solver; rethrows it where that is not allowed.
-    void
-                                     fall_back(const SolverFailure &failure);
+    const SolverParameters           parameters;
+    bool                             direct_fallback_allowed = false;
+    bool                             fell_back               = false;
     const unsigned int               degree;
     bool                             symmetric = true;
     dealii::TimerOutput             *timer;
