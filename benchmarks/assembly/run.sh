@@ -10,9 +10,10 @@
 # usage: benchmarks/assembly/run.sh [--coarse]
 #   --coarse: P1 only (the version in the tests); fails if a P1 matrix
 #   assembly costs more than MAX_MATRIX_PER_CELL instructions per cell,
-#   set-up included (21,000: about 17,000 now, 25,344 before fixed DoFs
-#   and cell vectors went around AffineConstraints, 47,360 before the
-#   cached scatter, the scalar FEValues and the shared face values).
+#   set-up included (19,000: 17,377 now, 18,395 before the cells' local
+#   indices, 25,344 before fixed DoFs and cell vectors went around
+#   AffineConstraints, 47,360 before the cached scatter, the scalar
+#   FEValues and the shared face values).
 #   Exits 77 (skipped) without valgrind.
 # The set-up column: what the first assembly does once per mesh (each
 # cell's positions in the matrix, each thread's workspace), divided like
@@ -22,7 +23,7 @@
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/assembly}
-max_matrix_per_cell=${MAX_MATRIX_PER_CELL:-21000}
+max_matrix_per_cell=${MAX_MATRIX_PER_CELL:-19000}
 coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
 here=$(dirname "$0")

@@ -31,17 +31,20 @@ namespace RestShape
                         const Point<3>           &X,
                         const LoadState          &load) const
   {
-    Tensor<1, 3> f = effective_density(cell) * load.acceleration;
-    const double tissue =
-      mesh.mass_ratio(cell) * materials.density(cell.material_id());
+    // effective_density(cell) with the label, ratio and density looked up
+    // once: this runs for every cell of every assembly.
+    const double ratio   = mesh.mass_ratio(cell);
+    const double density = materials.density(cell.material_id());
+    Tensor<1, 3> f =
+      ratio * (density - (loads.hydrostatic ? 0. : loads.fluid_density)) *
+      load.acceleration;
     if (load.tissue_acceleration.norm_square() > 0)
-      f += tissue * load.tissue_acceleration;
+      f += ratio * density * load.tissue_acceleration;
     // Above the free surface (against the drained acceleration) the
     // tissue has lost its buoyancy.
     if (body_force_varies(load) &&
         load.drained_acceleration * (X - load.fluid_level) < 0)
-      f +=
-        mesh.mass_ratio(cell) * loads.fluid_density * load.drained_acceleration;
+      f += ratio * loads.fluid_density * load.drained_acceleration;
     return f;
   }
 } // namespace RestShape

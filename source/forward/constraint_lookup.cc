@@ -40,10 +40,14 @@ namespace RestShape
   ConstraintLookup::Kind
   ConstraintLookup::strongest(const std::vector<unsigned int> &local) const
   {
-    Kind k = Kind::free;
+    // The kinds are 0, 1 and 2: their maximum from their bitwise or.
+    static_assert(static_cast<int>(Kind::free) == 0 &&
+                  static_cast<int>(Kind::fixed) == 1 &&
+                  static_cast<int>(Kind::linked) == 2);
+    unsigned int any = 0;
     for (const unsigned int i : local)
-      k = std::max(k, kinds[i]);
-    return k;
+      any |= static_cast<unsigned int>(kinds[i]);
+    return (any & 2) != 0 ? Kind::linked : static_cast<Kind>(any);
   }
 
   void
@@ -52,9 +56,16 @@ namespace RestShape
                                const std::vector<unsigned int> &local,
                                Buffer                          &global) const
   {
-    if (strongest(local) == Kind::linked)
+    const Kind kind = strongest(local);
+    if (kind == Kind::linked)
       {
         source->distribute_local_to_global(cell, dofs, global);
+        return;
+      }
+    if (kind == Kind::free)
+      {
+        for (unsigned int i = 0; i < local.size(); ++i)
+          global.local_element(local[i]) += cell(i);
         return;
       }
     // A fixed DoF takes nothing from a cell vector.

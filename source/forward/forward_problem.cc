@@ -88,6 +88,7 @@ namespace RestShape
                           &rhs_buffer,
                           &magnitude_buffer})
       b->reinit(owned_dofs, relevant_dofs, comm);
+    cell_local_indices.reinit(dof_handler_, *raw_buffer.get_partitioner());
     current_load = LoadState();
 
     setup_load_terms();

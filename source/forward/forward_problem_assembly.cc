@@ -66,6 +66,7 @@ namespace RestShape
       , cell_external(n)
       , cell_magnitude(n)
       , dofs(n)
+      , local(n)
     {}
 
     FullMatrix<double>                   cell_matrix;
@@ -73,6 +74,7 @@ namespace RestShape
     Vector<double>                       cell_external;  // f_ext
     Vector<double>                       cell_magnitude; // |f_ext| + |f_int|
     std::vector<types::global_dof_index> dofs;
+    std::vector<unsigned int>            local; // CellLocalIndices
     bool                                 valid      = true;
     unsigned int                         cell_index = 0; // active index
     Point<3>                             center;         // of an inverted cell
@@ -95,17 +97,18 @@ namespace RestShape
     cell->get_dof_indices(copy.dofs);
     copy.cell_index = cell->active_cell_index();
     copy.valid      = true;
-    scratch.d_cell.gather(d_buffer, copy.dofs);
-    scratch.w_cell.gather(w_buffer, copy.dofs);
+    cell_local_indices.get(copy.cell_index, copy.local);
+    scratch.d_cell.gather_local(d_buffer, copy.local);
+    scratch.w_cell.gather_local(w_buffer, copy.local);
     scratch.faces.forget();
 
     const Label        label = cell->material_id();
     const MaterialLaw &law   = material_table.law(label);
     // Mass from the mesh (target) geometry: rho dV_mesh, whatever the rest
-    // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh.
-    const bool         varies = body_force_varies(current_load);
-    const Tensor<1, 3> cell_body_force =
-      body_force(*cell, cell->center(), current_load);
+    // shape; an immersing fluid (CSF) buoys it by rho_fluid dV_mesh. At the
+    // centre where it does not vary over the cell (set below).
+    const bool    varies = current_body_force_varies;
+    Tensor<1, 3>  cell_body_force;
     const Tensor2 I = unit_symmetric_tensor<3>();
 
     ElasticCell &elastic = scratch.elastic;
@@ -149,12 +152,15 @@ namespace RestShape
     if (scratch.simplex != nullptr)
       {
         scratch.simplex->reinit(mesh_cell);
+        cell_body_force =
+          body_force(*cell, scratch.simplex->center(), current_load);
         valid = add_points(*scratch.simplex);
       }
     else
       {
         scratch.fe_values.reinit(mesh_cell);
-        valid = add_points(scratch.fe_values);
+        cell_body_force = body_force(*cell, cell->center(), current_load);
+        valid           = add_points(scratch.fe_values);
       }
     if (!valid)
       {
@@ -242,8 +248,9 @@ namespace RestShape
           std::pair(&lookup_base, &constraints_base),
           std::pair(&lookup_newton, &constraints_newton)})
       lookup->reinit(*constraints, *raw_buffer.get_partitioner());
-    bool          all_valid = true;
-    double        energy    = 0;
+    current_body_force_varies = body_force_varies(current_load);
+    bool          all_valid   = true;
+    double        energy      = 0;
     InvertedCells inverted;
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
@@ -269,11 +276,7 @@ namespace RestShape
             return;
           }
         energy += c.energy;
-        const Utilities::MPI::Partitioner &partitioner =
-          *raw_buffer.get_partitioner();
-        cell_local.resize(c.dofs.size());
-        for (unsigned int i = 0; i < c.dofs.size(); ++i)
-          cell_local[i] = partitioner.global_to_local(c.dofs[i]);
+        const std::vector<unsigned int> &cell_local = c.local;
         lookup_hanging.distribute(c.cell_rhs, c.dofs, cell_local, raw_buffer);
         lookup_base.distribute(c.cell_external,
                                c.dofs,

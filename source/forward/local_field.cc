@@ -18,11 +18,11 @@ namespace RestShape
   }
 
   void
-  LocalField::gather(const LinearAlgebra::distributed::Vector<double> &v,
-                     const std::vector<types::global_dof_index>       &dofs)
+  LocalField::gather_local(const LinearAlgebra::distributed::Vector<double> &v,
+                           const std::vector<unsigned int> &local)
   {
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      coefficients[i] = v(dofs[i]);
+    for (unsigned int i = 0; i < local.size(); ++i)
+      coefficients[i] = v.local_element(local[i]);
   }
 
 } // namespace RestShape

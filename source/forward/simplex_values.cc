@@ -94,8 +94,13 @@ namespace RestShape
     // The Jacobian of x = sum_v X_v phi_v(xi): column j is X_(j+1) - X_0
     // (the linear shape functions' gradients are -1 and the unit vectors).
     Point<3> X[n_vertices];
+    vertex_mean = Point<3>();
     for (unsigned int v = 0; v < n_vertices; ++v)
-      X[v] = cell->vertex(v);
+      {
+        X[v] = cell->vertex(v);
+        vertex_mean += X[v];
+      }
+    vertex_mean /= n_vertices;
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = 0; j < 3; ++j)
         J[i][j] = -X[0][i] + X[j + 1][i];

@@ -133,8 +133,11 @@ namespace RestShape
       {
         double              *row   = all_values + row_start[cell * n + i];
         const std::uint16_t *place = &position[(cell * n + i) * n];
+        // Through a raw pointer: FullMatrix's operator() reloads the
+        // table's size and data on each entry.
+        const double *const from = &cell_matrix(i, 0);
         for (unsigned int j = 0; j < n; ++j)
-          row[place[j]] += cell_matrix(i, j);
+          row[place[j]] += from[j];
         rhs.local_element(local[i]) += cell_rhs(i);
       }
   }

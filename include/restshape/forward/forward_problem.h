@@ -21,6 +21,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <restshape/forward/active_set_constraints.h>
+#include <restshape/forward/cell_local_indices.h>
 #include <restshape/forward/constraint_lookup.h>
 #include <restshape/forward/contact_conditions.h>
 #include <restshape/forward/discretization.h>
@@ -427,9 +428,9 @@ namespace RestShape
     MatrixType     tangent;
     TangentScatter scatter; // of the cells' matrices into tangent
     // The three constraint sets by the buffers' local indices (set at
-    // each assembly) and a cell's local indices (the copier's).
-    ConstraintLookup          lookup_hanging, lookup_base, lookup_newton;
-    std::vector<unsigned int> cell_local;
+    // each assembly) and the cells' local indices (set up with the DoFs).
+    ConstraintLookup lookup_hanging, lookup_base, lookup_newton;
+    CellLocalIndices cell_local_indices;
     // Each thread's assembly workspace, kept from one assembly to the next:
     // building its FEValues and FEFaceValues costs as much as assembling
     // a thousand P1 cells.
@@ -458,6 +459,8 @@ namespace RestShape
     // Tangent of the next assembly (Tangent = adaptive switches it).
     TangentType tangent_type = TangentType::consistent;
     LoadState   current_load;
+    /// body_force_varies(current_load), set at each assembly.
+    bool current_body_force_varies = false;
 
     std::vector<std::unique_ptr<LoadTerm>> load_terms; // setup_load_terms()
     /// The built-in terms among them (the surface pressure's level and

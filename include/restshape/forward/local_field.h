@@ -26,10 +26,11 @@ namespace RestShape
     /// scalar element (FE_SimplexP or FE_Q).
     explicit LocalField(const dealii::FiniteElement<3> &fe);
 
-    /// The coefficients of @p v at the cell's @p dofs.
+    /// The coefficients of @p v at the cell's DoFs of local indices
+    /// @p local (CellLocalIndices).
     void
-    gather(const dealii::LinearAlgebra::distributed::Vector<double> &v,
-           const std::vector<dealii::types::global_dof_index>       &dofs);
+    gather_local(const dealii::LinearAlgebra::distributed::Vector<double> &v,
+                 const std::vector<unsigned int> &local);
 
     /// The field at each point of @p values (of the base element: an
     /// FEValues, FEFaceValues or SimplexValues).

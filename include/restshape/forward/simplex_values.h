@@ -57,6 +57,12 @@ namespace RestShape
     {
       return points[q];
     }
+    /// The mean of the vertices, as cell->center() computes it.
+    const dealii::Point<3> &
+    center() const
+    {
+      return vertex_mean;
+    }
     /// The Jacobian of the map from the reference cell (constant).
     const dealii::DerivativeForm<1, 3, 3> &
     jacobian() const
@@ -76,6 +82,7 @@ namespace RestShape
     std::vector<double>               JxW_values;
     std::vector<dealii::Point<3>>     points;
     dealii::DerivativeForm<1, 3, 3>   J;
+    dealii::Point<3>                  vertex_mean;
   };
 } // namespace RestShape
 
