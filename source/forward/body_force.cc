@@ -10,15 +10,6 @@ namespace RestShape
     , materials(context.materials)
   {}
 
-  double
-  BodyForce::effective_density(const CellAccessor<3, 3> &cell) const
-  {
-    const Label label = cell.material_id();
-    return mesh.mass_ratio(cell) *
-           (materials.density(label) -
-            (loads.hydrostatic ? 0. : loads.fluid_density));
-  }
-
   bool
   BodyForce::body_force_varies(const LoadState &load) const
   {
@@ -31,8 +22,8 @@ namespace RestShape
                         const Point<3>           &X,
                         const LoadState          &load) const
   {
-    // effective_density(cell) with the label, ratio and density looked up
-    // once: this runs for every cell of every assembly.
+    // The label, ratio and density looked up once: this runs for every
+    // cell of every assembly.
     const double ratio   = mesh.mass_ratio(cell);
     const double density = materials.density(cell.material_id());
     Tensor<1, 3> f =

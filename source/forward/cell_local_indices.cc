@@ -1,7 +1,5 @@
 #include <restshape/forward/cell_local_indices.h>
 
-#include <algorithm>
-
 namespace RestShape
 {
   using namespace dealii;

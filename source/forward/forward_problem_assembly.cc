@@ -148,20 +148,21 @@ namespace RestShape
     };
     // As a cell of the mesh: the DoFHandler's cell is of the vector element.
     const Triangulation<3>::cell_iterator mesh_cell = cell;
-    bool                                  valid     = false;
+    Point<3>                              center;
     if (scratch.simplex != nullptr)
       {
         scratch.simplex->reinit(mesh_cell);
-        cell_body_force =
-          body_force(*cell, scratch.simplex->center(), current_load);
-        valid = add_points(*scratch.simplex);
+        center = scratch.simplex->center();
       }
     else
       {
         scratch.fe_values.reinit(mesh_cell);
-        cell_body_force = body_force(*cell, cell->center(), current_load);
-        valid           = add_points(scratch.fe_values);
+        center = cell->center();
       }
+    cell_body_force  = body_force(*cell, center, current_load);
+    const bool valid = scratch.simplex != nullptr ?
+                         add_points(*scratch.simplex) :
+                         add_points(scratch.fe_values);
     if (!valid)
       {
         copy.valid  = false;
@@ -276,25 +277,21 @@ namespace RestShape
             return;
           }
         energy += c.energy;
-        const std::vector<unsigned int> &cell_local = c.local;
-        lookup_hanging.distribute(c.cell_rhs, c.dofs, cell_local, raw_buffer);
+        lookup_hanging.distribute(c.cell_rhs, c.dofs, c.local, raw_buffer);
         lookup_base.distribute(c.cell_external,
                                c.dofs,
-                               cell_local,
+                               c.local,
                                external_buffer);
-        lookup_newton.distribute(c.cell_rhs,
-                                 c.dofs,
-                                 cell_local,
-                                 condensed_buffer);
+        lookup_newton.distribute(c.cell_rhs, c.dofs, c.local, condensed_buffer);
         if (what == Assemble::residual_and_magnitudes)
           lookup_newton.distribute(c.cell_magnitude,
                                    c.dofs,
-                                   cell_local,
+                                   c.local,
                                    magnitude_buffer);
         if (matrix)
           scatter.add(c.cell_index,
                       lookup_newton,
-                      cell_local,
+                      c.local,
                       c.cell_matrix,
                       c.cell_rhs,
                       c.dofs,

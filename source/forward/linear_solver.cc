@@ -87,9 +87,7 @@ namespace RestShape
         }
       catch (const SolverFailure &failure)
         {
-          if (!direct_fallback_allowed)
-            throw;
-          switch_to_direct(failure.what());
+          switch_to_direct(failure);
         }
 
     solve_directly(A, x, b);
@@ -109,9 +107,13 @@ namespace RestShape
   }
 
   void
-  LinearSolver::switch_to_direct(const std::string &reason)
+  LinearSolver::switch_to_direct(const SolverFailure &failure)
   {
-    fell_back = true;
+    // Called in the handler of @p failure: without the fallback, rethrow it.
+    if (!direct_fallback_allowed)
+      throw;
+    fell_back                = true;
+    const std::string reason = failure.what();
     amg.reset();
     amg_matrix = nullptr;
     // The failure's advice (to set the direct solver) is what happens here.
@@ -254,9 +256,7 @@ namespace RestShape
         }
       catch (const SolverFailure &failure)
         {
-          if (!direct_fallback_allowed)
-            throw;
-          switch_to_direct(failure.what());
+          switch_to_direct(failure);
           factorise(*last_matrix);
         }
     if (symmetric_direct != nullptr)

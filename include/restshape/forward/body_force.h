@@ -26,19 +26,14 @@ namespace RestShape
     /// Whether the fluid drained above a level that may cross a cell acts.
     bool
     body_force_varies(const LoadState &load) const override;
-    /// effective_density() times the acceleration, plus the tissue
-    /// acceleration on the full density, plus the buoyancy lost where the
-    /// fluid is drained.
+    /// The acceleration on the effective density (the cell's, reduced by
+    /// the fluid's with Fluid load = buoyancy, times the mesh's mass
+    /// ratio), plus the tissue acceleration on the full density, plus the
+    /// buoyancy lost where the fluid is drained.
     dealii::Tensor<1, 3>
     body_force(const dealii::CellAccessor<3, 3> &cell,
                const dealii::Point<3>           &X,
                const LoadState                  &load) const override;
-
-    /// The mass density (kg/m^3) on which the body acceleration acts in
-    /// @p cell: reduced by the fluid's with Fluid load = buoyancy, times the
-    /// mesh's mass ratio.
-    double
-    effective_density(const dealii::CellAccessor<3, 3> &cell) const;
 
   private:
     const LoadParameters &loads;

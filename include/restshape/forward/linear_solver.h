@@ -20,6 +20,8 @@ class Epetra_MultiVector;
 
 namespace RestShape
 {
+  class SolverFailure; // restshape/base/input_error.h
+
   /**
    * OpenBLAS (which MUMPS factorises with) starts one thread per core of its
    * own, whatever DEAL_II_NUM_THREADS or the number of MPI ranks on a node
@@ -121,10 +123,11 @@ namespace RestShape
                       const double      relative_tolerance);
     void
     solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
-    /// Solve with the direct solver from now on, after an iterative solve
-    /// failed for @p reason (allow_direct_fallback()).
+    /// In the handler of @p failure of an iterative solve: solve with the
+    /// direct solver from now on if allow_direct_fallback() was called,
+    /// rethrow it otherwise.
     void
-    switch_to_direct(const std::string &reason);
+    switch_to_direct(const SolverFailure &failure);
     /// MUMPS's (symbolic, when A is new, and) numeric factorisation of A.
     void
     factorise(const MatrixType &A);
