@@ -17,8 +17,18 @@ namespace RestShape
     constexpr double stagnation_margin = 1e4;
     /// ... its relative residual is below this...
     constexpr double near_equilibrium = 1e-2;
-    /// ... and it fell by less than 10 % per step on average.
+    /// ... and it fell by less than 10 % per step on average;
     constexpr double stagnation_rate = 0.9;
+    /// or, at any residual, it stays on a plateau: it fell by less than
+    /// 10 % over the whole window (0.99^10 = 0.904)...
+    constexpr double no_progress_rate = 0.99;
+    /// ... and its largest and smallest value over the window are within
+    /// this factor (seen: the P1 brain pushed onto the cutting skull by 2 g
+    /// along -y, full and short steps in turn at |R|/|f| = 1.02e-2 to
+    /// 1.03e-2, just above near_equilibrium, for 86 steps up to the
+    /// iteration cap; while the energy's line search leads Newton far from
+    /// an equilibrium, the residual jumps by orders instead).
+    constexpr double plateau_band = 1.25;
 
     /// The mean factor per step by which the residual fell over the last
     /// stagnation_window accepted steps of @p history (at most 1); 0 while
@@ -33,6 +43,19 @@ namespace RestShape
       if (!(now > 0 && before > 0))
         return 0;
       return std::min(1., std::pow(now / before, 1. / stagnation_window));
+    }
+
+    /// Whether the last stagnation_window accepted steps of @p history
+    /// stay within plateau_band of each other.
+    bool
+    on_plateau(const std::vector<double> &history)
+    {
+      if (history.size() <= stagnation_window)
+        return false;
+      const auto [low, high] =
+        std::minmax_element(history.end() - 1 - stagnation_window,
+                            history.end());
+      return *low > 0 && *high <= plateau_band * *low;
     }
   } // namespace
 
@@ -53,8 +76,9 @@ namespace RestShape
   {
     const double rate      = mean_rate(history);
     const double projected = now * std::pow(rate, double(steps_left));
-    if (!(now < near_equilibrium && rate > stagnation_rate &&
-          projected > stagnation_margin * tolerance))
+    const bool   slow      = now < near_equilibrium && rate > stagnation_rate;
+    const bool   flat      = rate > no_progress_rate && on_plateau(history);
+    if (!((slow || flat) && projected > stagnation_margin * tolerance))
       return "";
     char text[400];
     std::snprintf(text,

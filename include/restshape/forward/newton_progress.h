@@ -18,14 +18,16 @@ namespace RestShape
   stalled(const std::vector<double> &history, const double now);
 
   /**
-   * Why Newton stagnates, or "" if it may still converge: its relative
-   * residual @p now is near an equilibrium (below 1e-2), it fell by less
-   * than 10 % per step on average over the last 10 accepted steps of
-   * @p history, and at that rate the @p steps_left iterations would end
-   * above 1e4 times the tolerance @p tolerance. (Far from an equilibrium,
-   * or while Newton speeds up, a slow stretch may end in Newton's
-   * quadratic basin.) @p max_steps: Solver/Maximum Newton iterations, for
-   * the message.
+   * Why Newton stagnates, or "" if it may still converge: at the mean
+   * rate of the last 10 accepted steps of @p history, the @p steps_left
+   * iterations would end above 1e4 times the tolerance @p tolerance, and
+   * either its relative residual @p now is near an equilibrium (below
+   * 1e-2) and fell by less than 10 % per step on average, or, at any
+   * residual, it stays on a plateau: it fell by less than 10 % over those
+   * 10 steps, all of them within a factor 1.25 of each other. (Far from
+   * an equilibrium, or while Newton speeds up, a slow stretch may end in
+   * Newton's quadratic basin; a plateau does not.) @p max_steps:
+   * Solver/Maximum Newton iterations, for the message.
    */
   std::string
   stagnation(const std::vector<double> &history,
