@@ -64,6 +64,15 @@ namespace RestShape
     return v.through + v.off == 0;
   }
 
+  bool
+  ContactProblem::moves_nodes_onto_surface() const
+  {
+    return count_owned([&](const Candidate &c) {
+             return c.active && c.follow_surface &&
+                    std::abs(c.gap) > gap_tolerance;
+           }) > 0;
+  }
+
   std::string
   ContactProblem::unsettled_text() const
   {

@@ -547,8 +547,10 @@ namespace RestShape
         // the active set).
         const bool exact_newton = contact == nullptr && shift == 0 &&
                                   strategy.tangent() == TangentType::consistent;
-        const LineSearchResult ls = line_search(
-          residual, reference, set_changed, exact_newton ? &watchdog : nullptr);
+        const bool             whole = set_changed || (contact != nullptr &&
+                                           contact->moves_nodes_onto_surface());
+        const LineSearchResult ls    = line_search(
+          residual, reference, whole, exact_newton ? &watchdog : nullptr);
         print_step(++step,
                    residual / reference,
                    reference,

@@ -200,6 +200,8 @@ namespace RestShape
     /// (within g_tol) at the state of the last update.
     bool
     is_satisfied() const override;
+    bool
+    moves_nodes_onto_surface() const override;
 
     /**
      * The contact conditions at the displacement @p d (ghosted) with the
@@ -341,9 +343,13 @@ namespace RestShape
       /// Carried off the surface by its planes: it follows the surface's
       /// distance along their mean normal for the rest of the solve.
       bool follow_surface = false;
-      bool removed        = false; // in an opening (remove_contact())
-      bool opened         = false; // removed by remove_contact()
-      bool set_aside      = false; // by keep_target_contacts()
+      /// While it follows the surface: the gap's change per unit of its
+      /// move along the normal, measured between updates (secant; 1 on a
+      /// plane normal to it). Its constraint moves it by gap / slope.
+      double surface_slope = 1;
+      bool   removed       = false; // in an opening (remove_contact())
+      bool   opened        = false; // removed by remove_contact()
+      bool   set_aside     = false; // by keep_target_contacts()
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its
       /// pull accepted (not released again in this solve).
@@ -426,6 +432,10 @@ namespace RestShape
     /// for the rest of the solve (Candidate::follow_surface).
     static void
     follow_surface(Candidate &c);
+    /// For a node that follows the surface, now at @p x with gap @p gap:
+    /// its secant slope from the last update (Candidate::surface_slope).
+    static void
+    measure_surface_slope(Candidate &c, const dealii::Point<3> &x, double gap);
     /// Contact pressure of every candidate (Pa; 0 where inactive).
     std::vector<double>
     pressures(const VectorType &raw_residual) const;

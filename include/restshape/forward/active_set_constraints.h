@@ -63,6 +63,12 @@ namespace RestShape
     /// Whether the state of the last update meets the conditions.
     virtual bool
     is_satisfied() const = 0;
+    /// Whether the constraints of the last update move nodes along the
+    /// obstacle's surface by more than its gap tolerance (a node that
+    /// follows the surface): the step is then taken whole, as after a
+    /// change of the set.
+    virtual bool
+    moves_nodes_onto_surface() const = 0;
     /// The conditions at @p d against the obstacle itself.
     virtual ContactConditions
     check_conditions(const VectorType &d,
