@@ -18,7 +18,9 @@
 # step counts and their ratio, the cost of contact in Newton steps, and
 # the last line the ratio of the sums over the converged cases. Prints a
 # markdown table (Newton steps, load steps, active nodes, seconds) and
-# writes it to $OUT/contact_stress.md; exits 1 on a defect, or with
+# writes it to $OUT/contact_stress.md with the Newton steps by what they
+# follow (step_profile.py: active-set changes, releases, rounds of the
+# strict check, convergence, halved attempts); exits 1 on a defect, or with
 # --coarse if that ratio exceeds MAX_STEP_RATIO.
 #
 # usage: benchmarks/contact_stress/run.sh [--coarse]
@@ -96,6 +98,7 @@ table=$out/contact_stress.md
 } >"$table"
 cat "$table"
 defects=0
+declare -A logs # the cases' logs by degree, for step_profile.py
 sum_with=0
 sum_without=0
 for p in $degrees; do
@@ -103,6 +106,7 @@ for p in $degrees; do
     for load in $loads; do
       name=${skull}_${load}_p$p
       dir=$out/$name
+      logs[$p]+=" $dir.log"
       start=$(date +%s.%N)
       solve "$dir" "$load" "$p" "$skull"
       code=$?
@@ -155,6 +159,13 @@ echo "defects: $defects"
 ratio=$(awk -v a=$sum_with -v b=$sum_without 'BEGIN { printf "%.2f", a / b }')
 echo "Newton steps with / without contact, converged cases: $sum_with / $sum_without = $ratio" |
   tee -a "$table"
+# Where the steps go, by what each step follows (step_profile.py).
+for p in $degrees; do
+  echo
+  echo "P$p Newton steps by what they follow:"
+  # shellcheck disable=SC2086 # one log path per word
+  python3 "$(dirname "$0")/step_profile.py" ${logs[$p]}
+done | tee -a "$table"
 if $coarse && awk -v r="$ratio" -v m="$max_step_ratio" 'BEGIN { exit !(r > m) }'; then
   echo "contact costs more than $max_step_ratio times the Newton steps of the solves without it"
   exit 1
