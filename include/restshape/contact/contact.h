@@ -432,6 +432,10 @@ namespace RestShape
     /// for the rest of the solve (Candidate::follow_surface).
     static void
     follow_surface(Candidate &c);
+    /// Whether the fixed planes of node @p c carried it off the obstacle's
+    /// surface (beyond the gap tolerance): it follows the surface then.
+    bool
+    carried_off_surface(const Candidate &c) const;
     /// For a node that follows the surface, now at @p x with gap @p gap:
     /// its secant slope from the last update (Candidate::surface_slope).
     static void
