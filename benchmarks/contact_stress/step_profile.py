@@ -16,6 +16,7 @@ Prints one line per category and the total.
 import re
 import sys
 
+CATEGORIES = ("set change", "release", "strict", "converge", "halved")
 STEP = re.compile(r"Newton +(\d+):.*\(\+(\d+) new, -(\d+) released\)")
 
 
@@ -24,7 +25,7 @@ def profile(log):
     lines = open(log).read().splitlines()
     if not any("Forward solve: converged" in l for l in lines):
         return None
-    counts = dict.fromkeys(("set change", "release", "strict", "converge", "halved"), 0)
+    counts = dict.fromkeys(CATEGORIES, 0)
     attempt, follows = [], "converge"
     for line in lines:
         if "Newton failed" in line:
@@ -47,7 +48,7 @@ def profile(log):
 
 
 def main():
-    total = dict.fromkeys(("set change", "release", "strict", "converge", "halved"), 0)
+    total = dict.fromkeys(CATEGORIES, 0)
     solves = 0
     for log in sys.argv[1:]:
         counts = profile(log)

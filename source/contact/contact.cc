@@ -294,14 +294,11 @@ namespace RestShape
   bool
   ContactProblem::carried_off_surface(const Candidate &c) const
   {
-    // Fixed planes that carried the node off the surface or through it.
-    // Once releases are frozen it follows the surface at once: left to the
-    // strict check of the converged state, each such round cost 2 to 4
-    // Newton steps more (the P1 brain on the cutting skull, 48 cases of
-    // benchmarks/contact_stress: 83 of 596 steps after a round of the
-    // check, 39 with this).
-    return c.planes.fixed() && !c.planes.planes().empty() &&
-           std::abs(c.gap) > gap_tolerance;
+    // Planes (held or fixed) that carried the node off the surface or
+    // through it: the strict check lets them go (enforce_conditions()),
+    // and so does the active-set update for fixed planes once releases are
+    // frozen (held ones it re-planes itself).
+    return !c.planes.planes().empty() && std::abs(c.gap) > gap_tolerance;
   }
 
   void
@@ -399,7 +396,11 @@ namespace RestShape
           {
             c.planes.update(
               x, g, gap_tolerance, parameters.plane_changes, c.normal);
-            if (releases_frozen && carried_off_surface(c))
+            // Left to the strict check of the converged state, each such
+            // node cost a round of 2 to 4 Newton steps (the P1 brain on
+            // the cutting skull, 48 cases of benchmarks/contact_stress: 83
+            // of 596 steps after a round of the check, 39 with this).
+            if (releases_frozen && c.planes.fixed() && carried_off_surface(c))
               follow_surface(c);
           }
         else

@@ -391,7 +391,7 @@ namespace RestShape
         // continuous) along the planes' mean normal, still active. (Let go
         // to follow the faces again, it would alternate between them, hold
         // their planes again and come back here: a cycle of rounds.)
-        if (!c.planes.planes().empty() && std::abs(c.gap) > gap_tolerance)
+        if (carried_off_surface(c))
           {
             follow_surface(c);
             ++changed;

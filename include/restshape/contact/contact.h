@@ -432,7 +432,7 @@ namespace RestShape
     /// for the rest of the solve (Candidate::follow_surface).
     static void
     follow_surface(Candidate &c);
-    /// Whether the fixed planes of node @p c carried it off the obstacle's
+    /// Whether the planes node @p c holds carried it off the obstacle's
     /// surface (beyond the gap tolerance): it follows the surface then.
     bool
     carried_off_surface(const Candidate &c) const;
