@@ -50,15 +50,21 @@ namespace RestShape
                   }
               if (matrix == nullptr)
                 continue;
-              // k phi_i phi_j dA between functions of one component.
-              for (unsigned int ci = 0; ci < 3; ++ci)
-                for (unsigned int r = 0; r < n_rows[ci]; ++r)
-                  {
-                    double *const row = matrix + rows[ci][r] * n_dofs;
-                    const double  phi = values[ci][r];
-                    for (unsigned int t = 0; t < n_rows[ci]; ++t)
-                      row[rows[ci][t]] += k * phi * values[ci][t] * JxW;
-                  }
+              // k phi_i phi_j dA between functions of one component. The
+              // components have the same scalar functions in the same
+              // order: each product once, for the three.
+              AssertThrow(n_rows[1] == n_rows[0] && n_rows[2] == n_rows[0],
+                          ExcInternalError());
+              for (unsigned int r = 0; r < n_rows[0]; ++r)
+                {
+                  const double phi = values[0][r];
+                  for (unsigned int t = 0; t < n_rows[0]; ++t)
+                    {
+                      const double product = k * phi * values[0][t] * JxW;
+                      for (unsigned int ci = 0; ci < 3; ++ci)
+                        matrix[rows[ci][r] * n_dofs + rows[ci][t]] += product;
+                    }
+                }
             }
         }
   }

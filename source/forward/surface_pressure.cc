@@ -216,11 +216,16 @@ namespace RestShape
     // for the symmetric solvers.
     double *const       cell = &c.cell_matrix(0, 0);
     const double *const face = &K(0, 0);
+    if (!is_symmetric)
+      {
+        for (unsigned int i = 0; i < n_dofs * n_dofs; ++i)
+          cell[i] += face[i];
+        return;
+      }
     for (unsigned int i = 0; i < n_dofs; ++i)
       for (unsigned int j = 0; j < n_dofs; ++j)
         cell[i * n_dofs + j] +=
-          is_symmetric ? 0.5 * (face[i * n_dofs + j] + face[j * n_dofs + i]) :
-                         face[i * n_dofs + j];
+          0.5 * (face[i * n_dofs + j] + face[j * n_dofs + i]);
   }
 
   void
@@ -262,30 +267,41 @@ namespace RestShape
     // Each entry gets one product per point, as before the loops were
     // turned: the same sums.
     const Tensor<1, 3> grad_p = load->pressure_gradient(c.load, x, face);
-    const std::vector<unsigned int> &scalar = c.d.scalar_functions();
-    std::array<Tensor<1, 3>, max_scalar_functions> h;
-    AssertThrow(fv.n_scalar_functions() <= max_scalar_functions,
-                ExcInternalError());
-    for (unsigned int k = 0; k < fv.n_scalar_functions(); ++k)
-      h[k] = F * cross_product_3d(N, fv.scalar_shape_grad(k, q));
-    // The traction's derivative by each shape function j, by component.
+    const std::vector<unsigned int> &scalar   = c.d.scalar_functions();
+    const unsigned int               n_scalar = fv.n_scalar_functions();
+    // Plain arrays: a Tensor's constructor zeroes it, and these are written
+    // whole before they are read.
+    double phi[max_scalar_functions];
+    double h[max_scalar_functions][3];
+    AssertThrow(n_scalar <= max_scalar_functions, ExcInternalError());
+    for (unsigned int k = 0; k < n_scalar; ++k)
+      {
+        phi[k] = fv.scalar_shape_value(k, q);
+        const Tensor<1, 3> h_k =
+          F * cross_product_3d(N, fv.scalar_shape_grad(k, q));
+        for (unsigned int d = 0; d < 3; ++d)
+          h[k][d] = h_k[d];
+      }
+    // The traction's derivative by each shape function j, by component:
+    // grad_p[c_j] phi_j a + p (e_cj x h_j) dA, whose cross product has the
+    // components 0, -h[c_j + 2] and h[c_j + 1] (indices mod 3) at c_j,
+    // c_j + 1 and c_j + 2.
     std::array<std::array<double, 3 * max_scalar_functions>, 3> dt;
     for (unsigned int j = 0; j < n_dofs; ++j)
       {
-        const unsigned int cj    = component[j];
-        const double       phi_j = fv.shape_value(j, q);
-        Tensor<1, 3>       e;
-        e[cj] = 1;
-        const Tensor<1, 3> dt_j =
-          grad_p[cj] * phi_j * a + p * cross_product_3d(e, h[scalar[j]]) * dA;
-        for (unsigned int cc = 0; cc < 3; ++cc)
-          dt[cc][j] = dt_j[cc];
+        const unsigned int  cj = component[j];
+        const unsigned int  c1 = (cj + 1) % 3, c2 = (cj + 2) % 3;
+        const double *const hj = h[scalar[j]];
+        const double        s  = grad_p[cj] * phi[scalar[j]];
+        dt[cj][j]              = s * a[cj];
+        dt[c1][j]              = s * a[c1] + (p * -hj[c2]) * dA;
+        dt[c2][j]              = s * a[c2] + (p * hj[c1]) * dA;
       }
     // Each row of a function that does not vanish at the point: one
     // contiguous sum over the columns.
     double *const matrix = &s.face_matrix(0, 0);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      if (const double phi_i = fv.shape_value(i, q); phi_i != 0)
+      if (const double phi_i = phi[scalar[i]]; phi_i != 0)
         {
           double *const       row    = matrix + i * n_dofs;
           const double *const by_dof = dt[component[i]].data();

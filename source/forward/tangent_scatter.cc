@@ -2,6 +2,7 @@
 #include <restshape/forward/tangent_scatter.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -9,6 +10,12 @@
 namespace RestShape
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// Of the vector element: 3 x 27 for Q2 hexahedra, the most there is.
+    constexpr unsigned int max_dofs_per_cell = 81;
+  } // namespace
 
   void
   TangentScatter::forget()
@@ -54,26 +61,36 @@ namespace RestShape
                          const std::vector<types::global_dof_index> &dofs,
                          const Epetra_CrsMatrix                     &matrix)
   {
-    std::vector<std::pair<int, unsigned int>> columns(n); // (column, j)
+    // On the stack: this runs once per cell, and allocations were a fifth
+    // of it. A larger cell takes AffineConstraints's path.
+    if (n > max_dofs_per_cell)
+      return false;
+    std::array<std::pair<int, unsigned int>, max_dofs_per_cell> columns;
     for (unsigned int j = 0; j < n; ++j)
       {
         columns[j] = {matrix.LCID(static_cast<int>(dofs[j])), j};
         if (columns[j].first < 0)
           return false;
       }
-    std::sort(columns.begin(), columns.end());
-    std::vector<std::pair<int, const int *>> rows(n); // (length, columns)
+    std::sort(columns.begin(), columns.begin() + n);
+    // The rows straight from the compressed storage (route() has checked
+    // that the matrix has it): ExtractMyRowView checks its arguments on
+    // each call.
+    int    *offsets = nullptr, *all_indices = nullptr;
+    double *unused = nullptr;
+    if (matrix.ExtractCrsDataPointers(offsets, all_indices, unused) != 0)
+      return false;
+    std::array<std::pair<int, const int *>, max_dofs_per_cell> rows;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const int row        = matrix.LRID(static_cast<int>(dofs[i]));
-        int       length     = 0;
-        int      *indices    = nullptr;
-        double   *row_values = nullptr;
-        if (row < 0 ||
-            matrix.ExtractMyRowView(row, length, row_values, indices) != 0 ||
-            length > std::numeric_limits<std::uint16_t>::max())
+        const int row = matrix.LRID(static_cast<int>(dofs[i]));
+        if (row < 0)
           return false;
-        row_start[cell * n + i] = row_values - values;
+        const int        length  = offsets[row + 1] - offsets[row];
+        const int *const indices = all_indices + offsets[row];
+        if (length > std::numeric_limits<std::uint16_t>::max())
+          return false;
+        row_start[cell * n + i] = offsets[row];
         rows[i]                 = {length, indices};
         std::uint16_t *place    = &position[(cell * n + i) * n];
         // Another component of a node seen before: the same columns.
@@ -89,16 +106,20 @@ namespace RestShape
             std::copy(known, known + n, place);
             continue;
           }
-        int k = 0;
-        for (const auto &[col, j] : columns)
+        // The sorted columns in the sorted row: the next one is often the
+        // next entry (a node's components), else a binary search on.
+        const int *k = indices, *const end = indices + length;
+        for (unsigned int c = 0; c < n; ++c)
           {
-            while (k < length && indices[k] < col)
-              ++k;
+            const auto &[col, j] = columns[c];
+            if (k == end || *k != col)
+              k = std::lower_bound(k, end, col);
             // Not found: not in the sparsity (deal.II's path says so), or
             // the row's columns are not sorted (deal.II's path adds it).
-            if (k == length || indices[k] != col)
+            if (k == end || *k != col)
               return false;
-            place[j] = k;
+            place[j] = k - indices;
+            ++k;
           }
       }
     return true;
