@@ -187,7 +187,7 @@ namespace RestShape
         // LU, symmetric or not (measured: the same flops either way).
         direct_solver->SetParameters(list);
         auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get());
-        mumps->SetICNTL(7, 5);   // METIS ordering
+        mumps->SetICNTL(7, 5);   // METIS (Debian's MUMPS: PORD)
         mumps->SetICNTL(14, 50); // 50 % workspace margin
         if (direct_solver->SymbolicFactorization() != 0)
           throw SolverFailure("MUMPS: symbolic factorisation failed");

@@ -14,7 +14,10 @@ namespace RestShape
     constexpr int job_solve     = 3;
     /// SYM = 2: general symmetric (LDL^T with pivoting).
     constexpr int symmetric_indefinite = 2;
-    /// ICNTL(7) = 5: METIS ordering (as for the Amesos path).
+    /// ICNTL(7) = 5: METIS ordering where MUMPS has it (as for the Amesos
+    /// path). Debian's MUMPS 5.5 is built without METIS and SCOTCH: it
+    /// takes PORD, its own nested dissection (ICNTL(7) = 4), and says so
+    /// only in the messages switched off below.
     constexpr int metis_ordering = 5;
     /// ICNTL(14): 50 % workspace margin over the analysis's estimate...
     constexpr int workspace_margin_percent = 50;

@@ -186,7 +186,8 @@ namespace RestShape
     /// and memory of the LU that Amesos asks for), kept between solves.
     std::unique_ptr<SymmetricMumps> symmetric_direct;
     /// MUMPS, kept between solves with the same matrix object so that the
-    /// symbolic factorisation (METIS ordering) is done once per mesh.
+    /// symbolic factorisation (the fill-reducing ordering) is done once per
+    /// mesh.
     std::unique_ptr<Epetra_LinearProblem> direct_problem;
     std::unique_ptr<Amesos_BaseSolver>    direct_solver;
     const void                           *factored_matrix = nullptr;

@@ -17,7 +17,7 @@ namespace RestShape
    * half the memory and its factorisation about half the flops of the LU
    * factorisation that Amesos_Mumps asks MUMPS for (Amesos sets SYM = 0
    * whatever the matrix's MatrixProperty says, Trilinos issues 2331 and
-   * 2332). The analysis (METIS ordering) is done once per sparsity pattern;
+   * 2332). The analysis (the ordering) is done once per sparsity pattern;
    * each factorise() copies the current values.
    */
   class SymmetricMumps
