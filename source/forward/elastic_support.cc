@@ -1,4 +1,5 @@
 #include <restshape/forward/elastic_support.h>
+#include <restshape/forward/element_limits.h>
 #include <restshape/forward/surface_load.h>
 
 #include <array>
@@ -22,12 +23,12 @@ namespace RestShape
     const unsigned int               n_dofs    = context.fe.n_dofs_per_cell();
     const std::vector<unsigned int> &component = c.d.components();
     const FaceScratch               &s         = c.scratch;
-    // The shape functions of a cell: 81 for Q2 hexahedra, the most there
-    // is; by component, those that do not vanish at a point (the face's).
-    constexpr unsigned int                            max_dofs = 81;
-    std::array<std::array<unsigned int, max_dofs>, 3> rows;
-    std::array<std::array<double, max_dofs>, 3>       values;
-    AssertThrow(n_dofs <= max_dofs, ExcInternalError());
+    // By component, the shape functions that do not vanish at a point (the
+    // face's); the components have the same scalar functions in the same
+    // order, so their values once.
+    std::array<std::array<unsigned int, max_scalar_functions>, 3> rows;
+    std::array<double, max_scalar_functions>                      values;
+    AssertThrow(n_dofs <= max_dofs_per_cell, ExcInternalError());
     double *const matrix = c.matrix ? &c.cell_matrix(0, 0) : nullptr;
     for (const unsigned int f : c.cell->face_indices())
       if (c.cell->face(f)->at_boundary())
@@ -43,24 +44,24 @@ namespace RestShape
               for (unsigned int i = 0; i < n_dofs; ++i)
                 if (const double phi = fv.shape_value(i, q); phi != 0)
                   {
-                    const unsigned int ci    = component[i];
-                    rows[ci][n_rows[ci]]     = i;
-                    values[ci][n_rows[ci]++] = phi;
+                    const unsigned int ci = component[i];
+                    if (ci == 0)
+                      values[n_rows[ci]] = phi;
+                    rows[ci][n_rows[ci]++] = i;
                     c.cell_rhs(i) -= k * u_rest[ci] * phi * JxW;
                   }
               if (matrix == nullptr)
                 continue;
-              // k phi_i phi_j dA between functions of one component. The
-              // components have the same scalar functions in the same
-              // order: each product once, for the three.
+              // k phi_i phi_j dA between functions of one component: each
+              // product once, for the three.
               AssertThrow(n_rows[1] == n_rows[0] && n_rows[2] == n_rows[0],
                           ExcInternalError());
               for (unsigned int r = 0; r < n_rows[0]; ++r)
                 {
-                  const double phi = values[0][r];
+                  const double phi = values[r];
                   for (unsigned int t = 0; t < n_rows[0]; ++t)
                     {
-                      const double product = k * phi * values[0][t] * JxW;
+                      const double product = k * phi * values[t] * JxW;
                       for (unsigned int ci = 0; ci < 3; ++ci)
                         matrix[rows[ci][r] * n_dofs + rows[ci][t]] += product;
                     }

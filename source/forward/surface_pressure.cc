@@ -2,6 +2,7 @@
 
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_reductions.h>
+#include <restshape/forward/element_limits.h>
 #include <restshape/forward/surface_pressure.h>
 
 #include <array>
@@ -11,12 +12,6 @@
 namespace RestShape
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// Of the scalar element: 27 for Q2 hexahedra, the most there is.
-    constexpr unsigned int max_scalar_functions = 27;
-  } // namespace
 
   SurfacePressure::SurfacePressure(const LoadContext &context)
     : context(context)

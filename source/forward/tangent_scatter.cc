@@ -1,4 +1,5 @@
 #include <Epetra_CrsMatrix.h>
+#include <restshape/forward/element_limits.h>
 #include <restshape/forward/tangent_scatter.h>
 
 #include <algorithm>
@@ -10,12 +11,6 @@
 namespace RestShape
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// Of the vector element: 3 x 27 for Q2 hexahedra, the most there is.
-    constexpr unsigned int max_dofs_per_cell = 81;
-  } // namespace
 
   void
   TangentScatter::forget()
