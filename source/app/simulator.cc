@@ -8,7 +8,7 @@
 #include <restshape/base/interruption.h>
 #include <restshape/base/units.h>
 #include <restshape/base/version.h>
-#include <restshape/forward/load_scales.h>
+#include <restshape/loads/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
 #include <restshape/mesh/gmsh_io.h>

@@ -4,7 +4,7 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/units.h>
-#include <restshape/forward/load_scales.h>
+#include <restshape/loads/load_scales.h>
 #include <restshape/mesh/mesh_pieces.h>
 
 #include <cmath>

@@ -6,9 +6,9 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/filtered_iterator.h>
 
-#include <restshape/forward/elastic_cell.h>
+#include <restshape/fem/elastic_cell.h>
 #include <restshape/forward/forward_problem.h>
-#include <restshape/forward/simplex_values.h>
+#include <restshape/fem/simplex_values.h>
 
 namespace RestShape
 {

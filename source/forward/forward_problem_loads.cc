@@ -1,8 +1,8 @@
 // ForwardProblem: the load terms (load_term.h) and the scene's load.
-#include <restshape/forward/body_force.h>
-#include <restshape/forward/elastic_support.h>
+#include <restshape/loads/body_force.h>
+#include <restshape/loads/elastic_support.h>
 #include <restshape/forward/forward_problem.h>
-#include <restshape/forward/load_terms.h>
+#include <restshape/loads/load_registry.h>
 
 namespace RestShape
 {

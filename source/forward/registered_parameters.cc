@@ -1,5 +1,5 @@
-#include <restshape/forward/load_terms.h>
-#include <restshape/forward/material_laws.h>
+#include <restshape/loads/load_registry.h>
+#include <restshape/material/law_registry.h>
 #include <restshape/forward/registered_parameters.h>
 
 namespace RestShape

@@ -6,7 +6,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <restshape/forward/linear_solver.h>
+#include <restshape/solver/linear_solver.h>
 
 #include <algorithm>
 

@@ -10,7 +10,7 @@
 #include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
-#include <restshape/forward/material.h>
+#include <restshape/material/material_table.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/mesh/mesh_transforms.h>

@@ -7,7 +7,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <restshape/base/region.h>
-#include <restshape/forward/load_parameters.h>
+#include <restshape/loads/load_parameters.h>
 
 #include <string>
 

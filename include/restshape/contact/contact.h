@@ -9,7 +9,7 @@
 #include <restshape/contact/contact_parameters.h>
 #include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
-#include <restshape/forward/active_set_constraints.h>
+#include <restshape/solver/active_set_constraints.h>
 #include <restshape/forward/forward_problem.h>
 
 #include <array>

@@ -8,10 +8,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <restshape/forward/boundary_parameters.h>
-#include <restshape/forward/discretization_parameters.h>
-#include <restshape/forward/load_parameters.h>
-#include <restshape/forward/material_parameters.h>
-#include <restshape/forward/solver_parameters.h>
+#include <restshape/fem/discretization_parameters.h>
+#include <restshape/loads/load_parameters.h>
+#include <restshape/material/material_parameters.h>
+#include <restshape/solver/solver_parameters.h>
 
 #include <functional>
 #include <memory>
@@ -21,7 +21,7 @@ namespace RestShape
 {
   class LoadTerm;
   struct LoadContext;
-  /// Makes a load term of the registry (forward/load_terms.h) that a scene
+  /// Makes a load term of the registry (loads/load_registry.h) that a scene
   /// enables, with its parameters' values, on a discretisation.
   using LoadTermFactory =
     std::function<std::unique_ptr<LoadTerm>(const LoadContext &)>;

@@ -20,21 +20,21 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <restshape/forward/active_set_constraints.h>
-#include <restshape/forward/cell_local_indices.h>
-#include <restshape/forward/constraint_lookup.h>
-#include <restshape/forward/contact_conditions.h>
-#include <restshape/forward/discretization.h>
+#include <restshape/solver/active_set_constraints.h>
+#include <restshape/fem/cell_local_indices.h>
+#include <restshape/fem/constraint_lookup.h>
+#include <restshape/solver/active_set_conditions.h>
+#include <restshape/fem/discretization.h>
 #include <restshape/forward/forward_parameters.h>
-#include <restshape/forward/linear_solver.h>
-#include <restshape/forward/load_state.h>
-#include <restshape/forward/load_term.h>
-#include <restshape/forward/material.h>
-#include <restshape/forward/newton_solver.h>
-#include <restshape/forward/newton_system.h>
-#include <restshape/forward/surface_pressure.h>
-#include <restshape/forward/tangent_scatter.h>
-#include <restshape/forward/tangent_strategy.h>
+#include <restshape/solver/linear_solver.h>
+#include <restshape/loads/load_state.h>
+#include <restshape/loads/load_term.h>
+#include <restshape/material/material_table.h>
+#include <restshape/solver/newton_solver.h>
+#include <restshape/solver/newton_system.h>
+#include <restshape/loads/surface_pressure.h>
+#include <restshape/fem/tangent_scatter.h>
+#include <restshape/solver/tangent_strategy.h>
 #include <restshape/mesh/labelled_mesh.h>
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 #ifndef restshape_anderson_h
 #define restshape_anderson_h
 
-#include <restshape/forward/linear_solver.h>
+#include <restshape/solver/linear_solver.h>
 
 #include <deque>
 

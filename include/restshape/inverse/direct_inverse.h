@@ -6,7 +6,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <restshape/forward/forward_problem.h>
-#include <restshape/forward/newton_watchdog.h>
+#include <restshape/solver/newton_watchdog.h>
 
 #include <string>
 #include <utility>

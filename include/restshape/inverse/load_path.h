@@ -5,7 +5,7 @@
 
 #include <deal.II/base/tensor.h>
 
-#include <restshape/forward/load_state.h>
+#include <restshape/loads/load_state.h>
 
 #include <string>
 #include <vector>

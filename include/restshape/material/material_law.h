@@ -1,0 +1,94 @@
+// The interface of a material law at one quadrature point.
+#ifndef restshape_material_material_law_h
+#define restshape_material_material_law_h
+
+#include <deal.II/base/tensor.h>
+
+#include <restshape/fem/discretization_parameters.h>
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace RestShape
+{
+  using Tensor2 = dealii::Tensor<2, 3>;
+  using Tensor4 = dealii::Tensor<4, 3>;
+
+  /// What a law is given for one label: its small-strain moduli, and the
+  /// values of the parameters the law declares itself (LawParameter).
+  struct LawParameters
+  {
+    double youngs_modulus = 0; // Pa
+    double poissons_ratio = 0; // -
+    /// By parameter name (e.g. "Ogden alpha").
+    std::map<std::string, double> values;
+
+    /// The value of @p name, or @p fallback where it was not given.
+    double
+    value(const std::string &name, const double fallback) const
+    {
+      const auto v = values.find(name);
+      return v == values.end() ? fallback : v->second;
+    }
+  };
+
+  /// A parameter of a law, declared in subsection Materials with a value
+  /// per label (one value or a 'label:value' list).
+  struct LawParameter
+  {
+    std::string name;          // "Ogden alpha"
+    std::string default_value; // "-19"
+    std::string help;          // what it does, its unit, its range
+    std::string symbol;        // its name in an error: "alpha = 0 ..."
+    /// What is expected of a value ("a nonzero exponent with |alpha| <=
+    /// 100"), or "" if @p value is admissible.
+    std::function<std::string(double)> check;
+  };
+
+  /**
+   * A hyperelastic law W(F): the first Piola-Kirchhoff stress P = dW/dF and
+   * its tangent A[i][J][k][L] = d P_iJ / d F_kL. Every law is parameterised
+   * by Young's modulus and Poisson's ratio, its linearisation at F = I
+   * (Lame parameters mu and lambda). Laws are created by name
+   * (material_laws.h) and chosen per label by Materials/Material law.
+   */
+  class MaterialLaw
+  {
+  public:
+    explicit MaterialLaw(const LawParameters &parameters);
+    virtual ~MaterialLaw() = default;
+
+    /**
+     * P at @p F and, if @p tangent is not null, dP/dF of the kind @p type:
+     * consistent (exact), projected (exact with its negative eigenvalues
+     * removed) or warped (a law's simplified tangent where it has one,
+     * else the exact one). Returns false (an inverted point) if det F <= 0.
+     * @p energy, if not null, gets W(F) (J/m^3).
+     */
+    virtual bool
+    evaluate(const Tensor2    &F,
+             Tensor2          &P,
+             Tensor4          *tangent,
+             const TangentType type,
+             double           *energy = nullptr) const = 0;
+
+    /// W(F) (J/m^3), infinity where det F <= 0.
+    double
+    energy_density(const Tensor2 &F) const;
+
+    /// Lame parameters of the linearisation at F = I (Pa).
+    double mu     = 0;
+    double lambda = 0;
+  };
+
+  /**
+   * Remove the negative eigenvalues of a tangent (as a symmetric 9 x 9
+   * matrix of the pairs (iJ), (kL)): the projected Newton tangent of any
+   * law.
+   */
+  void
+  project_negative_eigenvalues(Tensor4 &A);
+} // namespace RestShape
+
+#endif

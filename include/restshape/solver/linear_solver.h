@@ -1,0 +1,218 @@
+// Linear solves of the Newton systems: sparse direct or CG + ML AMG.
+#ifndef restshape_solver_linear_solver_h
+#define restshape_solver_linear_solver_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <restshape/solver/solver_parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
+class Epetra_MultiVector;
+
+namespace RestShape
+{
+  class SolverFailure; // restshape/base/input_error.h
+
+  /**
+   * OpenBLAS (which MUMPS factorises with) starts one thread per core of its
+   * own, whatever DEAL_II_NUM_THREADS or the number of MPI ranks on a node
+   * say. Sets OpenBLAS's thread count to deal.II's
+   * (MultithreadInfo::n_threads(), which MPI_InitFinalize splits among the
+   * ranks of a node), unless OPENBLAS_NUM_THREADS is set. Returns the
+   * count set, 0 if it left OpenBLAS alone (variable set, or no OpenBLAS
+   * loaded).
+   */
+  unsigned int
+  match_blas_threads_to_deal_ii();
+
+  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+  class SymmetricMumps;
+
+  class LinearSolver
+  {
+  public:
+    /// @p timer, if given, gets a section "AMG set-up" (inside the
+    /// caller's "Linear solve").
+    LinearSolver(const SolverParameters &parameters,
+                 const unsigned int      degree,
+                 dealii::TimerOutput    *timer = nullptr);
+    ~LinearSolver();
+
+    /**
+     * The six rigid-body modes (three translations, three rotations), each
+     * with one value per locally owned degree of freedom, in the order of
+     * the locally owned index set. Used as AMG null space.
+     */
+    void
+    set_rigid_body_modes(std::vector<std::vector<double>> modes);
+
+    /// Whether the matrices are symmetric (default): the Krylov method is
+    /// then CG, otherwise GMRES.
+    void
+    set_symmetric(const bool symmetric);
+
+    /**
+     * Solve A x = b. Returns the number of iterations (1 for the direct
+     * solver). The iterative solver reduces the residual by
+     * @p relative_tolerance (0: Solver/Linear solver tolerance). Throws
+     * SolverFailure with the figures if it cannot.
+     */
+    unsigned int
+    solve(const MatrixType &A,
+          VectorType       &x,
+          const VectorType &b,
+          const double      relative_tolerance = 0);
+
+    /**
+     * Prepare solves with @p A for many right-hand sides (solve_prepared()):
+     * the direct solver factorises it, CG + AMG sets up (or, lagged, keeps)
+     * its AMG. Throws SolverFailure if the factorisation fails.
+     */
+    void
+    prepare(const MatrixType &A);
+
+    /**
+     * Solve A x = b with the matrix of the last solve() or prepare(): the
+     * direct solver with its factorisation (exact), CG + AMG to the
+     * relative tolerance @p tolerance (by default prepared_solve_tolerance:
+     * an inexact solve, for preconditioners inside a flexible Krylov
+     * method).
+     */
+    void
+    solve_prepared(VectorType       &x,
+                   const VectorType &b,
+                   const double      tolerance = prepared_solve_tolerance);
+
+    /// Whether solve_prepared() solves exactly (the direct solver).
+    bool
+    solves_prepared_exactly() const;
+
+    /// Free the factorisation (symbolic too) and the AMG; the next solve or
+    /// prepare() builds them again.
+    void
+    release();
+
+    /// The relative tolerance of solve_prepared() with CG + AMG.
+    static constexpr double prepared_solve_tolerance = 1e-3;
+
+    /// Linear solver = auto took CG + AMG: where CG and GMRES fail on a
+    /// system, solve it and every later one with the direct solver.
+    void
+    allow_direct_fallback();
+
+    /// Which method solved the last system ("MUMPS", "CG+AMG", "GMRES+AMG",
+    /// "MUMPS after CG+AMG failed").
+    std::string last_method;
+
+  private:
+    unsigned int
+    solve_iteratively(const MatrixType &A,
+                      VectorType       &x,
+                      const VectorType &b,
+                      const double      relative_tolerance);
+    void
+    solve_directly(const MatrixType &A, VectorType &x, const VectorType &b);
+    /// In the handler of @p failure of an iterative solve: solve with the
+    /// direct solver from now on if allow_direct_fallback() was called,
+    /// rethrow it otherwise.
+    void
+    switch_to_direct(const SolverFailure &failure);
+    /// MUMPS's (symbolic, when A is new, and) numeric factorisation of A.
+    void
+    factorise(const MatrixType &A);
+    /// The same with SymmetricMumps (analysed anew for a new matrix).
+    void
+    factorise_symmetric(const Epetra_CrsMatrix &matrix, const bool new_matrix);
+
+    /// The most CG iterations a lagged AMG may take for A x = b from the
+    /// current x down to @p target: lagged_slowdown_cap times the
+    /// iterations per decade of its first solve, at least
+    /// min_lagged_iterations (max_cg_iterations before any solve).
+    unsigned int
+    lagged_iteration_cap(const VectorType &b,
+                         const VectorType &x,
+                         const MatrixType &A,
+                         const double      target) const;
+
+    /// Krylov iteration limits: CG with a new AMG, then GMRES(200) if CG
+    /// breaks down (indefinite tangent).
+    static constexpr unsigned int max_cg_iterations    = 2000;
+    static constexpr unsigned int max_gmres_iterations = 5000;
+    /// A lagged AMG is rebuilt at once when CG would need more than this
+    /// many times its iterations per decade when it was built.
+    static constexpr double       lagged_slowdown_cap   = 3;
+    static constexpr unsigned int min_lagged_iterations = 30;
+
+    /// Makes the AMG preconditioner for @p A as Solver/AMG update says: a
+    /// new build, a recomputation on the aggregates of the first build, or
+    /// (lagged) the existing one; AmgSetup::rebuild builds it anew
+    /// whatever it says. Returns true if it built or recomputed.
+    enum class AmgSetup
+    {
+      as_configured,
+      rebuild
+    };
+    bool
+    setup_amg(const MatrixType &A, const AmgSetup how);
+
+    /// CG (GMRES for a non-symmetric matrix) with the current AMG under
+    /// @p control; false (and x = 0) if it does not converge.
+    bool
+    run_cg(const MatrixType      &A,
+           VectorType            &x,
+           const VectorType      &b,
+           dealii::SolverControl &control);
+
+    /// CG (GMRES if CG breaks down) with the current AMG; throws
+    /// SolverControl::NoConvergence if both fail.
+    unsigned int
+    run_krylov(const MatrixType &A,
+               VectorType       &x,
+               const VectorType &b,
+               const double      target);
+
+    /// MUMPS's LDL^T for a symmetric matrix on one process (half the flops
+    /// and memory of the LU that Amesos asks for), kept between solves.
+    std::unique_ptr<SymmetricMumps> symmetric_direct;
+    /// MUMPS, kept between solves with the same matrix object so that the
+    /// symbolic factorisation (the fill-reducing ordering) is done once per
+    /// mesh.
+    std::unique_ptr<Epetra_LinearProblem> direct_problem;
+    std::unique_ptr<Amesos_BaseSolver>    direct_solver;
+    const void                           *factored_matrix = nullptr;
+    /// The matrix of the last solve() or prepare().
+    const MatrixType *last_matrix = nullptr;
+
+    /// AMG, kept between solves with the same matrix object (the tangent
+    /// of one mesh); its null space (the rigid-body modes) must outlive it.
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<Epetra_MultiVector>                        null_space;
+    const void *amg_matrix = nullptr;
+    /// Lagged AMG: CG iterations per decade of residual reduction in the
+    /// first solve after the last build, and whether the next solve must
+    /// rebuild.
+    double amg_iterations_per_decade = 0;
+    bool   amg_stale                 = false;
+
+    const SolverParameters           parameters;
+    bool                             direct_fallback_allowed = false;
+    bool                             fell_back               = false;
+    const unsigned int               degree;
+    bool                             symmetric = true;
+    dealii::TimerOutput             *timer;
+    std::vector<std::vector<double>> rigid_body_modes;
+  };
+} // namespace RestShape
+
+#endif
