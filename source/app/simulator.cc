@@ -8,9 +8,9 @@
 #include <restshape/base/interruption.h>
 #include <restshape/base/units.h>
 #include <restshape/base/version.h>
-#include <restshape/loads/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
+#include <restshape/loads/load_scales.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
 #include <restshape/postprocess/inverse_report.h>

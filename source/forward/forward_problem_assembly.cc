@@ -7,8 +7,8 @@
 #include <deal.II/grid/filtered_iterator.h>
 
 #include <restshape/fem/elastic_cell.h>
-#include <restshape/forward/forward_problem.h>
 #include <restshape/fem/simplex_values.h>
+#include <restshape/forward/forward_problem.h>
 
 namespace RestShape
 {

@@ -1,7 +1,7 @@
 // ForwardProblem: the load terms (load_term.h) and the scene's load.
+#include <restshape/forward/forward_problem.h>
 #include <restshape/loads/body_force.h>
 #include <restshape/loads/elastic_support.h>
-#include <restshape/forward/forward_problem.h>
 #include <restshape/loads/load_registry.h>
 
 namespace RestShape

@@ -1,6 +1,6 @@
+#include <restshape/forward/registered_parameters.h>
 #include <restshape/loads/load_registry.h>
 #include <restshape/material/law_registry.h>
-#include <restshape/forward/registered_parameters.h>
 
 namespace RestShape
 {

@@ -1,9 +1,9 @@
 // DirectInverse: Jacobian-free Newton on the equilibrium at the target
 // with the rest shape as unknown (see direct_inverse.h).
 #include <restshape/base/input_error.h>
-#include <restshape/solver/newton_watchdog.h>
 #include <restshape/inverse/direct_inverse.h>
 #include <restshape/inverse/flexible_gmres.h>
+#include <restshape/solver/newton_watchdog.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#include <restshape/loads/elastic_support.h>
 #include <restshape/fem/element_limits.h>
+#include <restshape/loads/elastic_support.h>
 #include <restshape/loads/surface_load.h>
 
 #include <array>

@@ -1,6 +1,6 @@
 #include <restshape/base/input_error.h>
-#include <restshape/material/material_table.h>
 #include <restshape/material/law_registry.h>
+#include <restshape/material/material_table.h>
 
 #include <cmath>
 

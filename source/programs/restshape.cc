@@ -20,9 +20,9 @@
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/version.h>
-#include <restshape/solver/linear_solver.h>
 #include <restshape/forward/registered_parameters.h>
 #include <restshape/mesh/labelled_mesh.h>
+#include <restshape/solver/linear_solver.h>
 
 #include <filesystem>
 #include <iostream>

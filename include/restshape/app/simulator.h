@@ -12,9 +12,9 @@
 #include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
-#include <restshape/material/material_table.h>
 #include <restshape/inverse/inverse_problem.h>
 #include <restshape/io/output.h>
+#include <restshape/material/material_table.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/postprocess/error_estimator.h>
 #include <restshape/postprocess/postprocessor.h>

@@ -9,8 +9,8 @@
 #include <restshape/contact/contact_parameters.h>
 #include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
-#include <restshape/solver/active_set_constraints.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/solver/active_set_constraints.h>
 
 #include <array>
 #include <map>

@@ -14,8 +14,8 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <restshape/forward/forward_parameters.h>
-#include <restshape/solver/linear_solver.h>
 #include <restshape/mesh/labelled_mesh.h>
+#include <restshape/solver/linear_solver.h>
 
 #include <array>
 #include <memory>

@@ -7,8 +7,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <restshape/forward/boundary_parameters.h>
 #include <restshape/fem/discretization_parameters.h>
+#include <restshape/forward/boundary_parameters.h>
 #include <restshape/loads/load_parameters.h>
 #include <restshape/material/material_parameters.h>
 #include <restshape/solver/solver_parameters.h>

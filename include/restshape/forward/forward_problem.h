@@ -20,22 +20,22 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <restshape/solver/active_set_constraints.h>
 #include <restshape/fem/cell_local_indices.h>
 #include <restshape/fem/constraint_lookup.h>
-#include <restshape/solver/active_set_conditions.h>
 #include <restshape/fem/discretization.h>
+#include <restshape/fem/tangent_scatter.h>
 #include <restshape/forward/forward_parameters.h>
-#include <restshape/solver/linear_solver.h>
 #include <restshape/loads/load_state.h>
 #include <restshape/loads/load_term.h>
+#include <restshape/loads/surface_pressure.h>
 #include <restshape/material/material_table.h>
+#include <restshape/mesh/labelled_mesh.h>
+#include <restshape/solver/active_set_conditions.h>
+#include <restshape/solver/active_set_constraints.h>
+#include <restshape/solver/linear_solver.h>
 #include <restshape/solver/newton_solver.h>
 #include <restshape/solver/newton_system.h>
-#include <restshape/loads/surface_pressure.h>
-#include <restshape/fem/tangent_scatter.h>
 #include <restshape/solver/tangent_strategy.h>
-#include <restshape/mesh/labelled_mesh.h>
 
 #include <algorithm>
 #include <limits>

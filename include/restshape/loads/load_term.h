@@ -14,13 +14,13 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <restshape/forward/forward_parameters.h>
-#include <restshape/solver/linear_solver.h>
-#include <restshape/loads/load_state.h>
 #include <restshape/fem/local_field.h>
-#include <restshape/material/material_table.h>
 #include <restshape/fem/simplex_face_values.h>
+#include <restshape/forward/forward_parameters.h>
+#include <restshape/loads/load_state.h>
+#include <restshape/material/material_table.h>
 #include <restshape/mesh/labelled_mesh.h>
+#include <restshape/solver/linear_solver.h>
 
 #include <functional>
 #include <memory>

@@ -8,9 +8,9 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/solver/active_set_constraints.h>
-#include <restshape/solver/active_set_conditions.h>
 #include <restshape/fem/discretization_parameters.h>
+#include <restshape/solver/active_set_conditions.h>
+#include <restshape/solver/active_set_constraints.h>
 #include <restshape/solver/linear_solver.h>
 #include <restshape/solver/newton_system.h>
 #include <restshape/solver/newton_watchdog.h>
