@@ -1,9 +1,10 @@
 #!/bin/bash
 # Writes the parameter reference (markdown) from restshape --print-parameters:
 # one section per subsection, one table row per parameter with its default
-# and its help text. The build target parameter_reference runs it into
-# doc/parameters.md; the test doc/parameter_reference checks that the
-# committed file is current.
+# and its help text; then the load terms of the registry, each with its
+# description, its loads and its scenario entries (restshape
+# --print-load-terms). Every build runs it into doc/parameters.md; the test
+# doc/parameter_reference checks that the committed file is current.
 #
 # usage: doc/make_parameter_reference.sh RESTSHAPE > doc/parameters.md
 set -euo pipefail
@@ -49,3 +50,11 @@ set -euo pipefail
   }
   /^[ \t]*$/ { help = ""; next }
 '
+echo
+echo "## Load terms"
+echo
+echo "Every load a scene can apply, from the registry"
+echo "(\`source/loads/load_registry.cc\`): what it does, the names of its"
+echo "loads (which \`Scenario/Load scale\` takes) and its scenario entries."
+echo
+"$1" --print-load-terms

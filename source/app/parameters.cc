@@ -1,5 +1,6 @@
 #include <restshape/app/parameters.h>
 #include <restshape/base/input_error.h>
+#include <restshape/forward/registered_parameters.h>
 
 namespace RestShape
 {
@@ -11,15 +12,15 @@ namespace RestShape
       {"Materials", "Density", true},
       {"Materials", "Material law", true},
       {"Boundary conditions", "Fixed labels", false},
-      {"Boundary conditions", "Elastic support labels", false},
-      {"Loads", "Pressure labels", false},
       {"Contact", "Contact labels", false}};
 
-    /// The built-in parameters that name labels, then @p more.
+    /// Every parameter that names labels: the parts' and those the
+    /// registered laws and load terms declare.
     std::vector<LabelListEntry>
-    with_built_in_entries(const std::vector<LabelListEntry> &more)
+    all_label_entries()
     {
-      std::vector<LabelListEntry> entries = label_list_entries;
+      std::vector<LabelListEntry>       entries = label_list_entries;
+      const std::vector<LabelListEntry> more    = registered_label_entries();
       entries.insert(entries.end(), more.begin(), more.end());
       return entries;
     }
@@ -38,16 +39,16 @@ namespace RestShape
     ContactParameters::declare_parameters(prm);
     InverseParameters::declare_parameters(prm);
     ScenarioParameters::declare_parameters(prm);
+    declare_registered_parameters(prm);
   }
 
   void
-  Parameters::parse_parameters(
-    ParameterHandler                  &prm,
-    const std::vector<std::string>    &scenario_names,
-    const std::vector<LabelListEntry> &more_label_lists)
+  Parameters::parse_parameters(ParameterHandler               &prm,
+                               const std::vector<std::string> &scenario_names)
   {
     mesh.parse_parameters(prm);
     forward.parse_parameters(prm, mesh.length_unit);
+    parse_registered_parameters(prm, forward, mesh.length_unit);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);
@@ -59,18 +60,20 @@ namespace RestShape
     for (const std::string &name : names)
       {
         ScenarioParameters scenario;
-        scenario.parse_parameters(prm, name);
+        scenario.parse_parameters(prm, name, mesh.length_unit);
         if (!scenario.enabled)
           continue;
-        scenario.fluid_level *= mesh.length_unit;
-        scenario.craniotomy.scale(mesh.length_unit);
         scenario.read_surfaces();
-        scenario.check(forward.loads, inverse.enabled);
-        forward.pressure_set_later |=
-          scenario.has_pressure && scenario.pressure != 0;
+        scenario.check(forward.environment, inverse.enabled);
+        // What a scenario sets where the scene has none (a pressure: its
+        // follower tangent is then not symmetric from the start).
+        for (const auto &[entry, values] : scenario.change.values)
+          for (const double v : values)
+            if (v != 0)
+              forward.set_later.insert(entry);
         scenarios.push_back(scenario);
       }
-    for (const LabelListEntry &e : with_built_in_entries(more_label_lists))
+    for (const LabelListEntry &e : all_label_entries())
       {
         prm.enter_subsection(e.section);
         label_lists.push_back(
@@ -85,12 +88,10 @@ namespace RestShape
   }
 
   void
-  Parameters::replace_label_names(
-    ParameterHandler                  &prm,
-    const LabelNames                  &names,
-    const std::vector<LabelListEntry> &more_label_lists)
+  Parameters::replace_label_names(ParameterHandler &prm,
+                                  const LabelNames &names)
   {
-    for (const LabelListEntry &e : with_built_in_entries(more_label_lists))
+    for (const LabelListEntry &e : all_label_entries())
       {
         prm.enter_subsection(e.section);
         prm.set(e.entry,

@@ -7,6 +7,8 @@
 #include <restshape/base/mpi_reductions.h>
 #include <restshape/base/units.h>
 #include <restshape/base/vector_text.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/fem/nodal_norms.h>
 #include <restshape/postprocess/postprocessor.h>
 #include <restshape/postprocess/scenario_report.h>
 
@@ -21,85 +23,8 @@ namespace RestShape
 
   namespace
   {
-    constexpr double radians_per_degree = M_PI / 180.;
-    constexpr double ml_per_m3          = 1e6;
-    /// Sines and cosines below this are zero.
-    constexpr double round_off = 1e-15;
-
-    /// The rotation by @p degrees about x, then y, then z.
-    Tensor<2, 3>
-    rotation(const Tensor<1, 3> &degrees)
-    {
-      Tensor<2, 3> R = unit_symmetric_tensor<3>();
-      for (unsigned int axis = 0; axis < 3; ++axis)
-        {
-          const double a = degrees[axis] * radians_per_degree;
-          // Exact at multiples of 90 degrees (cos 90 = 6e-17 otherwise).
-          const auto snap = [](const double x) {
-            return std::abs(x) < round_off ? 0. : x;
-          };
-          const double       c = snap(std::cos(a)), s = snap(std::sin(a));
-          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
-          Tensor<2, 3>       Ra = unit_symmetric_tensor<3>();
-          Ra[i][i]              = c;
-          Ra[i][j]              = -s;
-          Ra[j][i]              = s;
-          Ra[j][j]              = c;
-          R                     = Ra * R;
-        }
-      return R;
-    }
-
-    /// A load change that changes nothing (Scenario: no change).
-    bool
-    is_zero(const LoadState &change)
-    {
-      return change.acceleration.norm_square() == 0 &&
-             change.tissue_acceleration.norm_square() == 0 &&
-             change.drained_acceleration.norm_square() == 0 &&
-             change.pressure == 0 && change.opening_pressure == 0 &&
-             change.fluid.empty() && change.opening_fluid.empty() &&
-             change.terms == 0;
-    }
+    constexpr double ml_per_m3 = 1e6;
   } // namespace
-
-  LoadState
-  changed_load(const ScenarioParameters &p,
-               const LoadParameters     &loads,
-               const LoadState          &scene,
-               const FreeSurface        &free_surface)
-  {
-    LoadState changed    = scene;
-    changed.acceleration = rotation(p.rotation_degrees) * scene.acceleration;
-    const bool turned    = p.rotation_degrees.norm_square() > 0;
-    if (loads.hydrostatic && (turned || p.has_fluid_level))
-      {
-        // The fluid's pressure turns with gravity, about its level.
-        const Point<3> level =
-          p.has_fluid_level     ? p.fluid_level :
-          loads.has_fluid_level ? loads.fluid_level :
-                                  free_surface(changed.acceleration);
-        changed.fluid.clear();
-        if (changed.acceleration.norm_square() > 0)
-          changed.fluid.push_back({changed.acceleration, level, 1.});
-      }
-    else if (p.has_fluid_level)
-      {
-        changed.drained_acceleration = changed.acceleration;
-        changed.fluid_level          = p.fluid_level;
-      }
-    if (p.has_pressure)
-      changed.pressure = p.pressure;
-    changed.tissue_acceleration += p.tissue_acceleration;
-    // The opening is at atmospheric pressure: its faces lose the pressure
-    // that acts after the change.
-    if (p.craniotomy.defined())
-      {
-        changed.opening_pressure = changed.pressure;
-        changed.opening_fluid    = changed.fluid;
-      }
-    return changed;
-  }
 
   void
   check_craniotomy(const Parameters         &parameters,
@@ -107,7 +32,7 @@ namespace RestShape
                    const LabelledMesh       &mesh,
                    const MPI_Comm            comm)
   {
-    const Region &opening = p.craniotomy;
+    const Region &opening = p.change.opening;
     if (!opening.defined())
       return;
     // Surface faces of the body (mesh geometry) whose centre lies inside.
@@ -135,14 +60,9 @@ namespace RestShape
                     const LabelledMesh       &mesh,
                     const MPI_Comm            comm)
   {
-    LoadState scene;
-    scene.acceleration = parameters.forward.loads.gravity;
-    const LoadState changed =
-      changed_load(p,
-                   parameters.forward.loads,
-                   scene,
-                   [&](const Tensor<1, 3> &) { return p.fluid_level; });
-    const Tensor<1, 3> g = changed.acceleration;
+    const Tensor<1, 3> g =
+      p.change.rotation * parameters.forward.environment.gravity;
+    const Point<3> &level = p.change.fluid_level;
     if (g.norm() == 0)
       throw InputError("",
                        p.section() + "/Fluid level",
@@ -151,7 +71,7 @@ namespace RestShape
     // Height of the body's highest vertex above the level (m).
     double top = -std::numeric_limits<double>::max();
     for (const Point<3> &v : mesh.triangulation().get_vertices())
-      top = std::max(top, -(g * (v - p.fluid_level)) / g.norm());
+      top = std::max(top, -(g * (v - level)) / g.norm());
     top = Utilities::MPI::max(top, comm);
     if (top <= 0)
       throw InputError(
@@ -171,7 +91,7 @@ namespace RestShape
     for (const ScenarioParameters &p : parameters.scenarios)
       {
         check_craniotomy(parameters, p, mesh, comm);
-        if (p.has_fluid_level)
+        if (p.change.has_fluid_level)
           check_fluid_level(parameters, p, mesh, comm);
       }
   }
@@ -179,26 +99,29 @@ namespace RestShape
   std::map<Label, TissueShift>
   tissue_shifts(const ForwardProblem &forward, const VectorType &u_owned)
   {
-    const VectorType                 u          = forward.ghosted_copy(u_owned);
-    const unsigned int               p          = forward.fe().degree;
-    const Quadrature<3>              quadrature = forward.mesh().is_simplex() ?
-                                                    Quadrature<3>(QGaussSimplex<3>(p + 1)) :
-                                                    Quadrature<3>(QGauss<3>(p + 1));
-    FEValues<3>                      fv(forward.mapping(),
-                   forward.fe(),
+    const VectorType    u = forward.discretization().ghosted_copy(u_owned);
+    const unsigned int  p = forward.discretization().fe().degree;
+    const Quadrature<3> quadrature =
+      forward.discretization().mesh().is_simplex() ?
+        Quadrature<3>(QGaussSimplex<3>(p + 1)) :
+        Quadrature<3>(QGauss<3>(p + 1));
+    FEValues<3>                      fv(forward.discretization().mapping(),
+                   forward.discretization().fe(),
                    quadrature,
                    update_values | update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<1, 3>>        values(quadrature.size());
     std::map<types::global_dof_index, const Node *> node_of;
-    for (const Node &node : forward.relevant_nodes())
+    for (const Node &node : forward.discretization().relevant_nodes())
       node_of[node.dofs[0]] = &node;
-    std::vector<types::global_dof_index> dofs(forward.fe().n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(
+      forward.discretization().fe().n_dofs_per_cell());
 
     std::map<Label, TissueShift> shifts;
-    for (const Label label : forward.mesh().labels())
+    for (const Label label : forward.discretization().mesh().labels())
       shifts[label];
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         forward.discretization().dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           TissueShift &t = shifts[cell->material_id()];
@@ -224,7 +147,8 @@ namespace RestShape
                   }
               }
         }
-    const MPI_Comm comm = forward.dof_handler().get_communicator();
+    const MPI_Comm comm =
+      forward.discretization().dof_handler().get_communicator();
     for (auto &[label, t] : shifts)
       {
         t.volume = Utilities::MPI::sum(t.volume, comm);
@@ -257,32 +181,31 @@ namespace RestShape
   std::string
   Scenario::description(const LoadState &scene, const LoadState &changed) const
   {
-    const ScenarioParameters &p = scenario;
-    std::string               text;
-    const auto                add = [&](const std::string &part) {
-      text += (text.empty() ? "" : "; ") + part;
+    const ScenarioChange &p = scenario.change;
+    std::string           text;
+    const auto            add = [&](const std::string &part) {
+      if (!part.empty())
+        text += (text.empty() ? "" : "; ") + part;
     };
-    if (p.rotation_degrees.norm_square() > 0)
-      add("gravity " + vector_text(scene.acceleration) + " turned by " +
-          vector_text(p.rotation_degrees) + " degrees to " +
-          vector_text(changed.acceleration) + " m/s^2");
+    if (p.turned)
+      add("gravity " + vector_text(parameters.forward.environment.gravity) +
+          " turned by " + vector_text(p.rotation_degrees) + " degrees to " +
+          vector_text(p.rotation * parameters.forward.environment.gravity) +
+          " m/s^2");
     if (p.has_fluid_level)
       add("fluid drained above " +
           vector_text(p.fluid_level, parameters.mesh.length_unit) + " " +
           parameters.mesh.length_unit_name);
-    if (p.has_pressure)
-      add("surface pressure " + number_text(scene.pressure) + " -> " +
-          number_text(changed.pressure) + " Pa");
-    if (p.craniotomy.defined())
+    if (p.opening.defined())
       add("craniotomy: " +
-          p.craniotomy.text(parameters.mesh.length_unit,
-                            parameters.mesh.length_unit_name) +
+          p.opening.text(parameters.mesh.length_unit,
+                         parameters.mesh.length_unit_name) +
           " (" + std::to_string(opened_nodes) +
           " surface nodes freed from the skull, " +
           std::to_string(opened_faces) + " pressure faces at 0 Pa)");
-    if (p.tissue_acceleration.norm_square() > 0)
-      add("tissue body force " + vector_text(p.tissue_acceleration) +
-          " m/s^2 (not buoyed)");
+    add(forward.loads().change_text(scene, changed));
+    for (const auto &[name, factor] : scenario.scale)
+      add(name + " scaled by " + number_text(factor));
     return text.empty() ? "no change" : text;
   }
 
@@ -290,20 +213,20 @@ namespace RestShape
   Scenario::run(const Failure &fail)
   {
     // The pre-stressed model's equilibrium: where both models start.
-    const VectorType d_eq    = forward.owned_copy(forward.displacement());
-    const VectorType w_rest  = forward.owned_copy(forward.rest_displacement());
-    const LoadState  scene   = forward.load();
-    const LoadState  changed = changed_load(
-      scenario, parameters.forward.loads, scene, [this](const Tensor<1, 3> &a) {
-        return forward.highest_pressure_point(a);
-      });
+    const VectorType d_eq =
+      forward.discretization().owned_copy(forward.displacement());
+    const VectorType w_rest =
+      forward.discretization().owned_copy(forward.rest_displacement());
+    const LoadState scene = forward.load();
+    const LoadState changed =
+      forward.loads().changed_load(scenario.change, scene, scenario.scale);
     ContactProblem::State equilibrium_set;
     if (contact != nullptr)
       equilibrium_set = contact->state();
-    const Region &opening = scenario.craniotomy;
+    const Region &opening = scenario.change.opening;
     if (opening.defined())
       {
-        opened_faces = forward.open_surface(opening);
+        opened_faces = forward.loads().open(opening);
         if (contact != nullptr)
           opened_nodes = contact->remove_contact(opening);
         record_scenario_opening(summary,
@@ -322,22 +245,24 @@ namespace RestShape
     const LoadState       change = difference(changed, scene);
     const SolveStatistics s1 =
       solve_pre_stressed(changed, change, w_rest, fail);
-    const VectorType d1 = forward.owned_copy(forward.displacement());
-    VectorType       u1 = d1;
+    const VectorType d1 =
+      forward.discretization().owned_copy(forward.displacement());
+    VectorType u1 = d1;
     u1 -= d_eq;
     // What carries the changed load, at the pre-stressed model's end state
     // (its contact set and normals; the stress-free solve changes them).
-    const SolveReductions r =
-      compute_reductions(forward,
-                         contact,
-                         u1,
-                         parameters.inverse.enabled,
-                         forward.dof_handler().get_communicator());
+    const SolveReductions r = compute_reductions(
+      forward,
+      contact,
+      u1,
+      parameters.inverse.enabled,
+      forward.discretization().dof_handler().get_communicator());
     record_scenario_forces(summary, scenario.output_name(), r);
     VectorType contact_fields;
     if (contact != nullptr)
       contact_fields =
-        contact->nodal_fields(forward.raw_residual(), output.length_scale());
+        ContactReport(*contact).nodal_fields(forward.raw_residual(),
+                                             output.length_scale());
     ContactProblem::State end_set;
     if (contact != nullptr)
       end_set = contact->state();
@@ -345,7 +270,7 @@ namespace RestShape
     pcout << "  stress-free model (rest shape = the pre-stressed equilibrium, "
              "the same contact set): the change alone"
           << std::endl;
-    VectorType            u2 = forward.zero_vector();
+    VectorType            u2 = forward.discretization().zero_vector();
     const SolveStatistics s2 =
       solve_stress_free(change, d_eq, start_set, fail, u2);
 
@@ -357,7 +282,7 @@ namespace RestShape
     report(u1, u2, contact_fields);
 
     // Back at the equilibrium, the skull closed, for the next scenario.
-    forward.open_surface(Region());
+    forward.loads().open(Region());
     if (contact != nullptr)
       {
         contact->close_openings();
@@ -373,14 +298,14 @@ namespace RestShape
                                const Failure    &fail)
   {
     SolveStatistics s;
-    if (is_zero(change) && !scenario.craniotomy.defined())
+    if (change.empty() && !scenario.change.opening.defined())
       {
         // Nothing changes: the equilibrium stays, exactly (a contact solve
         // from it could move it within the gap tolerance: the nodes it
         // released for pulling are activated again).
         // Its residual (what the reductions and contact forces read) is
         // assembled anew: an earlier scenario's solve left its own.
-        s.converged = forward.evaluate_residual();
+        s.converged = forward.evaluate();
         pcout << "      no change of load: the pre-stressed model stays"
               << std::endl;
         return s;
@@ -400,7 +325,7 @@ namespace RestShape
   {
     SolveStatistics s;
     shift = 0;
-    if (is_zero(change))
+    if (change.empty())
       {
         // Stress-free under no load, it stays where it is: an exact
         // solution, which a solve would only blur with its contact
@@ -417,7 +342,7 @@ namespace RestShape
     s = forward.solve(change, d_eq);
     if (!s.converged)
       fail(s, "stress-free");
-    shift = forward.owned_copy(forward.displacement());
+    shift = forward.discretization().owned_copy(forward.displacement());
     shift -= d_eq;
     return s;
   }
@@ -429,7 +354,7 @@ namespace RestShape
   {
     const auto        a     = tissue_shifts(forward, prestressed);
     const auto        b     = tissue_shifts(forward, stress_free);
-    const LabelNames &names = forward.mesh().label_names();
+    const LabelNames &names = forward.discretization().mesh().label_names();
     // Ratios of shifts below a nanometre are ratios of round-off: 0.
     constexpr double least_shift = 1e-9; // m
     const auto       ratio       = [](const double x, const double y) {
@@ -462,8 +387,10 @@ namespace RestShape
               << ratio(t.max_shift, s.max_shift) << '\n';
         }
     });
-    const auto [mean1, max1] = forward.nodal_norms(prestressed);
-    const auto [mean2, max2] = forward.nodal_norms(stress_free);
+    const auto [mean1, max1] =
+      nodal_norms(forward.discretization(), prestressed);
+    const auto [mean2, max2] =
+      nodal_norms(forward.discretization(), stress_free);
     record_scenario_shifts(summary,
                            scenario.output_name(),
                            {mean1, max1},

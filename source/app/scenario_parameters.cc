@@ -6,7 +6,9 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_parsing.h>
 #include <restshape/contact/obstacle.h>
+#include <restshape/loads/load_registry.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace RestShape
@@ -16,7 +18,35 @@ namespace RestShape
   namespace
   {
     /// Largest rotation angle accepted, in degrees.
-    constexpr double max_angle_degrees = 360;
+    constexpr double max_angle_degrees  = 360;
+    constexpr double radians_per_degree = M_PI / 180.;
+    /// Sines and cosines below this are zero.
+    constexpr double round_off = 1e-15;
+
+    /// The rotation by @p degrees about x, then y, then z.
+    Tensor<2, 3>
+    rotation(const Tensor<1, 3> &degrees)
+    {
+      Tensor<2, 3> R = unit_symmetric_tensor<3>();
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        {
+          const double a = degrees[axis] * radians_per_degree;
+          // Exact at multiples of 90 degrees (cos 90 = 6e-17 otherwise).
+          const auto snap = [](const double x) {
+            return std::abs(x) < round_off ? 0. : x;
+          };
+          const double       c = snap(std::cos(a)), s = snap(std::sin(a));
+          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
+          Tensor<2, 3>       Ra = unit_symmetric_tensor<3>();
+          Ra[i][i]              = c;
+          Ra[i][j]              = -s;
+          Ra[j][i]              = s;
+          Ra[j][j]              = c;
+          R                     = Ra * R;
+        }
+      return R;
+    }
+
   } // namespace
 
   void
@@ -62,20 +92,6 @@ namespace RestShape
                       "Loads/Fluid level, or stays above the highest pressure "
                       "face where that is empty).");
     prm.declare_entry(
-      "Surface pressure",
-      "",
-      Patterns::Anything(),
-      "The uniform surface pressure in Pa on the Loads/Pressure "
-      "labels after the change (0: atmospheric, as in an "
-      "opened skull). Empty: unchanged.");
-    prm.declare_entry("Tissue body force",
-                      "0, 0, 0",
-                      Patterns::Anything(),
-                      "A body force per unit mass in m/s^2 ('x, y, z') on "
-                      "the tissue alone, not buoyed: a force field as in "
-                      "Table 1 of Morin et al. 2015 ('9.81, 0, 0': the "
-                      "tissue's weight, sideways).");
-    prm.declare_entry(
       "Craniotomy",
       "",
       Patterns::Anything(),
@@ -90,6 +106,18 @@ namespace RestShape
       "(by their centre, mesh geometry) are at atmospheric pressure: they "
       "lose the uniform surface pressure (after Surface pressure). Empty: "
       "no craniotomy.");
+    prm.declare_entry(
+      "Load scale",
+      "",
+      Patterns::Anything(),
+      "Loads scaled by name after the other changes: 'NAME: factor, NAME: "
+      "factor' (dimensionless factors; the names are those of the load "
+      "terms' loads, doc/parameters.md, \"Load terms\": e.g. 'Surface "
+      "traction: 0' takes a retractor away, 'Gravity: 0.5' halves the "
+      "buoyed weight). Empty: none.");
+    // The entries of the load terms (load_registry.h).
+    for (const ScenarioEntry &e : load_scenario_entries())
+      prm.declare_entry(e.name, e.default_value, Patterns::Anything(), e.help);
     prm.leave_subsection();
   }
 
@@ -107,52 +135,93 @@ namespace RestShape
 
   void
   ScenarioParameters::parse_parameters(ParameterHandler  &prm,
-                                       const std::string &scenario_name)
+                                       const std::string &scenario_name,
+                                       const double       length_unit)
   {
     name = scenario_name;
     prm.enter_subsection(section());
-    enabled          = prm.get_bool("Enabled");
-    rotation_degrees = parse_vector(prm.get("Gravity rotation"),
-                                    section() + "/Gravity rotation");
+    enabled                 = prm.get_bool("Enabled");
+    change.rotation_degrees = parse_vector(prm.get("Gravity rotation"),
+                                           section() + "/Gravity rotation");
     for (unsigned int d = 0; d < 3; ++d)
-      if (std::abs(rotation_degrees[d]) > max_angle_degrees)
+      if (std::abs(change.rotation_degrees[d]) > max_angle_degrees)
         throw InputError("",
                          section() + "/Gravity rotation",
-                         number_text(rotation_degrees[d]) +
+                         number_text(change.rotation_degrees[d]) +
                            " degrees; expected angles in degrees between "
                            "-360 and 360");
+    change.rotation         = rotation(change.rotation_degrees);
+    change.turned           = change.rotation_degrees.norm_square() > 0;
     const std::string level = Utilities::trim(prm.get("Fluid level"));
-    has_fluid_level         = !level.empty();
-    if (has_fluid_level)
-      fluid_level = Point<3>(parse_vector(level, section() + "/Fluid level"));
-    const std::string pressure_text =
-      Utilities::trim(prm.get("Surface pressure"));
-    has_pressure = !pressure_text.empty();
-    if (has_pressure)
-      {
-        try
-          {
-            pressure =
-              parse_number(section() + "/Surface pressure", pressure_text);
-          }
-        catch (const InputError &)
-          {
-            throw InputError("",
-                             section() + "/Surface pressure",
-                             "'" + pressure_text +
-                               "' is not a number; expected a pressure in "
-                               "Pa or nothing (unchanged)");
-          }
-      }
-    tissue_acceleration = parse_vector(prm.get("Tissue body force"),
-                                       section() + "/Tissue body force");
-    craniotomy = parse_region(prm.get("Craniotomy"), section() + "/Craniotomy");
+    change.has_fluid_level  = !level.empty();
+    if (change.has_fluid_level)
+      change.fluid_level =
+        Point<3>(length_unit * parse_vector(level, section() + "/Fluid level"));
+    change.opening =
+      parse_region(prm.get("Craniotomy"), section() + "/Craniotomy");
+    change.opening.scale(length_unit);
+    for (const ScenarioEntry &e : load_scenario_entries())
+      parse_entry(prm, e);
+    parse_scale(prm.get("Load scale"));
     prm.leave_subsection();
+  }
+
+  void
+  ScenarioParameters::parse_entry(ParameterHandler &prm, const ScenarioEntry &e)
+  {
+    const std::string text = Utilities::trim(prm.get(e.name));
+    if (text.empty())
+      return;
+    const std::string parameter = section() + "/" + e.name;
+    if (e.n_values == 3)
+      {
+        const Tensor<1, 3> v  = parse_vector(text, parameter);
+        change.values[e.name] = {v[0], v[1], v[2]};
+        return;
+      }
+    try
+      {
+        change.values[e.name] = {parse_number(parameter, text)};
+      }
+    catch (const InputError &)
+      {
+        throw InputError("",
+                         parameter,
+                         "'" + text + "' is not a number; expected " + e.help);
+      }
+  }
+
+  void
+  ScenarioParameters::parse_scale(const std::string &text)
+  {
+    const std::string              parameter = section() + "/Load scale";
+    const std::vector<std::string> names     = load_names();
+    for (const std::string &item : Utilities::split_string_list(text, ','))
+      {
+        const auto        colon = item.rfind(':');
+        const std::string load  = Utilities::trim(
+          item.substr(0, colon == std::string::npos ? 0 : colon));
+        if (colon == std::string::npos ||
+            std::find(names.begin(), names.end(), load) == names.end())
+          {
+            std::string known;
+            for (const std::string &n : names)
+              known += (known.empty() ? "" : ", ") + n;
+            throw InputError("",
+                             parameter,
+                             "'" + item +
+                               "': expected 'NAME: factor' with "
+                               "NAME one of " +
+                               known);
+          }
+        scale[load] = parse_number(parameter, item.substr(colon + 1));
+      }
   }
 
   void
   ScenarioParameters::read_surfaces()
   {
+    Region &craniotomy = change.opening;
     if (craniotomy.shape != Region::Shape::surface)
       return;
     try
@@ -170,15 +239,15 @@ namespace RestShape
   }
 
   void
-  ScenarioParameters::check(const LoadParameters &loads,
-                            const bool            inverse_enabled) const
+  ScenarioParameters::check(const EnvironmentParameters &loads,
+                            const bool                   inverse_enabled) const
   {
     if (!inverse_enabled)
       throw InputError("",
                        section() + "/Enabled",
                        "a scenario starts from the pre-stressed model: set "
                        "Inverse problem/Enabled = true");
-    if (has_fluid_level && loads.fluid_density == 0)
+    if (change.has_fluid_level && loads.fluid_density == 0)
       throw InputError("",
                        section() + "/Fluid level",
                        "there is no fluid to drain: expected Loads/Fluid "

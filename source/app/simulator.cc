@@ -8,9 +8,12 @@
 #include <restshape/base/interruption.h>
 #include <restshape/base/units.h>
 #include <restshape/base/version.h>
+#include <restshape/contact/admissible_target.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
+#include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
-#include <restshape/loads/load_scales.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
 #include <restshape/postprocess/inverse_report.h>
@@ -29,6 +32,7 @@ namespace RestShape
                        const std::string      &prm_file,
                        const MPI_Comm          comm)
     : parameters(parameters)
+    , postprocess_parameters(parameters.postprocess_parameters())
     , prm(prm)
     , prm_file(prm_file)
     , comm(comm)
@@ -89,8 +93,13 @@ namespace RestShape
       parameters.forward, *mesh, *materials, timer, pcout);
     if (parameters.contact.enabled())
       {
-        contact =
-          std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+        contact = std::make_unique<ContactProblem>(
+          parameters.contact,
+          forward->discretization(),
+          *forward,
+          parameters.forward.solver.newton_tolerance,
+          materials->max_youngs_modulus(),
+          timer);
         forward->set_contact(contact.get());
       }
     setup_problems();
@@ -107,7 +116,7 @@ namespace RestShape
           refine(rest, guess);
         pcout << "Cycle " << cycle << ": "
               << mesh->triangulation().n_global_active_cells() << " cells, "
-              << forward->dof_handler().n_dofs() << " DoFs"
+              << forward->discretization().dof_handler().n_dofs() << " DoFs"
               << (guess ? ", starting from the previous cycle's solution" : "")
               << std::endl;
         const VectorType *start = guess ? &*guess : nullptr;
@@ -183,7 +192,8 @@ namespace RestShape
         contact->setup();
         check_obstacle_placement();
         pcout << "Contact: " << parameters.contact.obstacle_file << ", "
-              << contact->n_candidates() << " candidate nodes, allowed side: "
+              << ContactReport(*contact).n_candidates()
+              << " candidate nodes, allowed side: "
               << (parameters.contact.inside ? "inside" : "outside")
               << std::endl;
       }
@@ -211,12 +221,12 @@ namespace RestShape
       mesh->refine_global(prepare);
     setup_problems();
     guess.reset();
-    rest = forward->zero_vector();
+    rest = forward->discretization().zero_vector();
     if (!transfer)
       return;
     std::vector<VectorType> fields = transfer->interpolate(*forward);
     unsigned int            n_bad  = 0;
-    if (!forward->rest_shape_is_valid(fields[1], n_bad))
+    if (!rest_shape_is_valid(forward->discretization(), fields[1], n_bad))
       {
         // The rest shape was checked at the coarse mesh's quadrature
         // points only.
@@ -234,16 +244,17 @@ namespace RestShape
   Simulator::initial_rest_shape() const
   {
     if (parameters.mesh.rest_shape_file.empty())
-      return forward->zero_vector();
+      return forward->discretization().zero_vector();
     const std::vector<Point<3>> rest =
       mesh->read_rest_shape(parameters.mesh.rest_shape_file);
     const auto               &vertices = mesh->triangulation().get_vertices();
     std::vector<Tensor<1, 3>> w(rest.size());
     for (unsigned int v = 0; v < rest.size(); ++v)
       w[v] = rest[v] - vertices[v];
-    const VectorType result = forward->interpolate_vertex_field(w);
-    unsigned int     n_bad  = 0;
-    if (!forward->rest_shape_is_valid(result, n_bad))
+    const VectorType result =
+      forward->discretization().interpolate_vertex_field(w);
+    unsigned int n_bad = 0;
+    if (!rest_shape_is_valid(forward->discretization(), result, n_bad))
       throw InputError(parameters.mesh.rest_shape_file,
                        "Mesh/Rest shape file",
                        std::to_string(n_bad) +
@@ -299,8 +310,9 @@ namespace RestShape
     std::string beyond;
     if (contact && guess == nullptr)
       {
-        const auto n =
-          forward->nodal_norms_above(contact->admissible_target_shift(), 0.);
+        const auto n = nodal_norms_above(forward->discretization(),
+                                         AdmissibleTarget(*contact).shift(),
+                                         0.);
         if (n.n > 0)
           {
             beyond = std::to_string(n.n) +
@@ -312,7 +324,7 @@ namespace RestShape
           }
       }
     SolveStatistics stats =
-      forward->solve_from(guess, forward->scene_load(), rest);
+      forward->solve_from(guess, forward->loads().scene_load(), rest);
     pcout << "  Forward solve: " << (stats.converged ? "converged" : "FAILED")
           << " in " << stats.newton_iterations << " Newton iterations, "
           << stats.load_steps << " load step(s)" << std::endl;
@@ -427,7 +439,8 @@ namespace RestShape
     const VectorType     &w        = forward->rest_displacement();
     const auto           &vertices = mesh->triangulation().get_vertices();
     std::vector<Point<3>> rest_positions(vertices);
-    for (const auto &cell : forward->dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         forward->discretization().dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           for (unsigned int c = 0; c < 3; ++c)
@@ -438,7 +451,7 @@ namespace RestShape
     // forward run from it alone reaches the target with the same mass.
     mesh->write_gmsh(rest_positions,
                      output->path("rest_shape.msh"),
-                     forward->image_mass_ratios());
+                     image_mass_ratios(*forward));
   }
 
   std::string
@@ -446,7 +459,7 @@ namespace RestShape
   {
     if (parameters.forward.solver.check_stability == StabilityCheck::off)
       return "Solver/Check stability = false";
-    if (!forward->tangent_is_symmetric())
+    if (!forward->loads().symmetric())
       return "the follower pressure acts on a surface with free edges: its "
              "tangent is not symmetric, and stability is then not a question "
              "of the energy";

@@ -4,7 +4,8 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/units.h>
-#include <restshape/loads/load_scales.h>
+#include <restshape/contact/admissible_target.h>
+#include <restshape/forward/load_scales.h>
 #include <restshape/mesh/mesh_pieces.h>
 
 #include <cmath>
@@ -58,7 +59,7 @@ namespace RestShape
   Simulator::check_scene_on_problem() const
   {
     if (parameters.forward.solver.check_stability == StabilityCheck::on &&
-        !forward->tangent_is_symmetric())
+        !forward->loads().symmetric())
       throw InputError(
         prm_file,
         "Solver/Check stability",
@@ -66,7 +67,7 @@ namespace RestShape
         "not conservative (its tangent is not symmetric): stability is "
         "then not a question of the energy; expected Check stability = "
         "false, or pressure faces that are closed or held at their edges");
-    if (contact || parameters.forward.boundary.support_stiffness > 0)
+    if (contact || forward->loads().has_support())
       return;
     // A piece that neither a fixed label nor a joint to a held piece holds
     // floats: its rigid motion makes the problem singular.
@@ -88,7 +89,8 @@ namespace RestShape
             "the mesh fixed or joined by faces to a fixed one");
     // Without contact or elastic support, every displacement component must
     // be fixed somewhere, or rigid-body motion makes the problem singular.
-    const std::array<bool, 3> held = forward->fixed_components();
+    const std::array<bool, 3> held =
+      forward->discretization().fixed_components();
     for (unsigned int c = 0; c < 3; ++c)
       if (!held[c])
         throw InputError(
@@ -106,7 +108,7 @@ namespace RestShape
     const std::vector<Point<3>> &targets = mesh->targets();
     if (targets.empty())
       {
-        contact->check_placement();
+        AdmissibleTarget(*contact).check_placement();
         return;
       }
     // A rest shape may cross the obstacle; its target may not.
@@ -114,9 +116,9 @@ namespace RestShape
     std::vector<Tensor<1, 3>> shift(vertices.size());
     for (unsigned int v = 0; v < targets.size(); ++v)
       shift[v] = targets[v] - vertices[v];
-    const VectorType ghosted =
-      forward->ghosted_copy(forward->interpolate_vertex_field(shift));
-    contact->check_placement(&ghosted);
+    const VectorType ghosted = forward->discretization().ghosted_copy(
+      forward->discretization().interpolate_vertex_field(shift));
+    AdmissibleTarget(*contact).check_placement(&ghosted);
   }
 
   void
@@ -146,7 +148,7 @@ namespace RestShape
   Simulator::held_labels() const
   {
     std::set<Label> held;
-    for (const auto &fixed : parameters.forward.boundary.fixed_labels)
+    for (const auto &fixed : parameters.forward.discretization.fixed_labels)
       held.insert(fixed.label);
     return held;
   }
@@ -154,7 +156,7 @@ namespace RestShape
   std::string
   Simulator::unheld_pieces_text() const
   {
-    if (!mesh || contact || parameters.forward.boundary.support_stiffness > 0)
+    if (!mesh || !forward || contact || forward->loads().has_support())
       return "";
     std::string text;
     for (const UnheldPiece &piece : mesh->unheld_pieces(held_labels()))

@@ -5,9 +5,9 @@
 #include <restshape/app/simulator.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
+#include <restshape/forward/load_scales.h>
 #include <restshape/forward/stability.h>
 #include <restshape/forward/state_transfer.h>
-#include <restshape/loads/load_scales.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_pieces.h>
 #include <restshape/postprocess/run_report.h>
@@ -22,8 +22,9 @@ namespace RestShape
   Simulator::postprocess(const unsigned int cycle, const SolveStatistics &stats)
   {
     // Nodal displacement from the rest shape.
-    VectorType u = forward->owned_copy(forward->displacement());
-    u -= forward->owned_copy(forward->rest_displacement());
+    VectorType u =
+      forward->discretization().owned_copy(forward->displacement());
+    u -= forward->discretization().owned_copy(forward->rest_displacement());
     const SolveReductions reductions = compute_reductions(
       *forward, contact.get(), u, parameters.inverse.enabled, comm);
     {
@@ -37,8 +38,8 @@ namespace RestShape
           {{"estimated_error", estimate.indicators}});
       }
     if (postprocessors.empty())
-      postprocessors = make_postprocessors(parameters, next_step);
-    const PostprocessInput in{parameters,
+      postprocessors = make_postprocessors(postprocess_parameters, next_step);
+    const PostprocessInput in{postprocess_parameters,
                               *mesh,
                               *forward,
                               contact.get(),

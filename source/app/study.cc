@@ -263,7 +263,6 @@ namespace RestShape
     // Check the scene and every value before the first run.
     ParameterHandler prm;
     Parameters::declare_parameters(prm);
-    declare_registered_parameters(prm);
     read_scene(prm, prm_file, overrides);
     prm.enter_subsection("Output");
     const std::string directory = prm.get("Directory") + "/study";

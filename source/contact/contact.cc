@@ -28,14 +28,19 @@ namespace RestShape
   } // namespace
 
   ContactProblem::ContactProblem(const ContactParameters &parameters,
-                                 const ForwardProblem    &forward,
+                                 const Discretization    &discretization,
+                                 const StateReader       &state,
+                                 const double             newton_tolerance,
+                                 const double             max_youngs_modulus,
                                  TimerOutput             &timer)
     : gap_tolerance(parameters.gap_tolerance > 0 ?
                       parameters.gap_tolerance :
-                      std::max(1e-10, forward.newton_tolerance()) *
-                        forward.mesh().diameter())
+                      std::max(1e-10, newton_tolerance) *
+                        discretization.mesh().diameter())
     , parameters(parameters)
-    , forward(forward)
+    , discretization(discretization)
+    , forward_state(state)
+    , max_youngs_modulus(max_youngs_modulus)
     , timer(timer)
   {
     TimerOutput::Scope scope(timer, "Contact search");
@@ -50,24 +55,25 @@ namespace RestShape
   ContactProblem::setup()
   {
     TimerOutput::Scope scope(timer, "Contact search");
-    const auto        &fe = forward.fe();
+    const auto        &fe = discretization.fe();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
-    const auto &nodes = forward.relevant_nodes();
+    const auto &nodes = discretization.relevant_nodes();
     for (unsigned int n = 0; n < nodes.size(); ++n)
       node_of_dof[nodes[n].dofs[0]] = n;
 
     candidates.clear();
     faces.clear();
     std::map<types::global_dof_index, unsigned int> candidate_of_dof;
-    FEFaceValues<3>                                 fv(forward.mapping(),
+    FEFaceValues<3>                                 fv(discretization.mapping(),
                        fe,
-                       forward.face_quadrature(),
+                       discretization.face_quadrature(),
                        update_values | update_JxW_values |
                          update_normal_vectors);
     std::vector<types::global_dof_index>            dofs(fe.n_dofs_per_cell());
-    const auto &constraints = forward.base_constraints();
+    const auto &constraints = discretization.base_constraints();
 
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       {
         if (cell->is_artificial() ||
             (!parameters.labels.empty() &&
@@ -75,7 +81,7 @@ namespace RestShape
           continue;
         for (const unsigned int f : cell->face_indices())
           {
-            if (!forward.mesh().at_surface(*cell, f))
+            if (!discretization.mesh().at_surface(*cell, f))
               continue;
             cell->get_dof_indices(dofs);
             fv.reinit(cell, f);
@@ -111,7 +117,7 @@ namespace RestShape
                 bool                hanging = false;
                 for (unsigned int c = 0; c < 3; ++c)
                   {
-                    fixed[c] = forward.is_fixed(node.dofs[c]);
+                    fixed[c] = discretization.is_fixed(node.dofs[c]);
                     hanging |=
                       constraints.is_constrained(node.dofs[c]) && !fixed[c];
                   }
@@ -123,8 +129,8 @@ namespace RestShape
                     Candidate c;
                     c.node  = node;
                     c.fixed = fixed;
-                    c.owned =
-                      forward.locally_owned_dofs().is_element(node.dofs[0]);
+                    c.owned = discretization.locally_owned_dofs().is_element(
+                      node.dofs[0]);
                     it = candidate_of_dof.emplace(dofs[i], candidates.size())
                            .first;
                     candidates.push_back(c);
@@ -146,9 +152,8 @@ namespace RestShape
           }
       }
 
-    h_min    = forward.mesh().minimum_cell_diameter();
-    c_scaled = parameters.active_set_constant *
-               forward.materials().max_youngs_modulus() / h_min;
+    h_min    = discretization.mesh().minimum_cell_diameter();
+    c_scaled = parameters.active_set_constant * max_youngs_modulus / h_min;
     history.clear();
   }
 
@@ -218,14 +223,14 @@ namespace RestShape
           c.dropped = 0;
         return;
       }
-    VectorType flags(forward.locally_owned_dofs(), comm);
+    VectorType flags(discretization.locally_owned_dofs(), comm);
     for (const Candidate &c : candidates)
       if (c.owned)
         flags[c.node.dofs[0]] = (c.active ? 1 : 0) + (c.eligible ? 2 : 0) +
                                 4 * c.dropped +
                                 (c.follow_surface ? follow_surface_flag : 0);
     flags.compress(VectorOperation::insert);
-    const VectorType ghosted = forward.ghosted_copy(flags);
+    const VectorType ghosted = discretization.ghosted_copy(flags);
     for (Candidate &c : candidates)
       if (!c.owned)
         {

@@ -5,7 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <restshape/base/units.h>
-#include <restshape/contact/contact.h>
+#include <restshape/contact/contact_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +21,7 @@ namespace RestShape
   MPI_Comm
   ContactProblem::communicator() const
   {
-    return forward.dof_handler().get_triangulation().get_communicator();
+    return discretization.dof_handler().get_triangulation().get_communicator();
   }
 
   template <typename Predicate>
@@ -89,44 +89,52 @@ namespace RestShape
   std::string
   ContactProblem::progress_text() const
   {
-    return ", contact " + std::to_string(n_active()) + " active (+" +
-           std::to_string(n_added) + " new, -" + std::to_string(n_released) +
-           " released)" +
+    return ", contact " + std::to_string(ContactReport(*this).n_active()) +
+           " active (+" + std::to_string(n_added) + " new, -" +
+           std::to_string(n_released) + " released)" +
            (releases_frozen ? " [frozen: only nodes that pull are released]" :
                               "");
   }
 
+  // ------------------------------------------------------------------
+  // ContactReport
+
+  ContactReport::ContactReport(const ContactProblem &contact)
+    : contact(contact)
+  {}
+
   unsigned int
-  ContactProblem::n_active() const
+  ContactReport::n_active() const
   {
-    return count_owned([](const Candidate &c) { return c.active; });
+    return contact.count_owned(
+      [](const ContactProblem::Candidate &c) { return c.active; });
   }
 
   unsigned int
-  ContactProblem::n_held() const
+  ContactReport::n_held() const
   {
-    return count_owned([](const Candidate &c) {
+    return contact.count_owned([](const ContactProblem::Candidate &c) {
       return c.active && c.planes.planes().size() > 1;
     });
   }
 
-  ContactProblem::Adhesion
-  ContactProblem::adhesion(const VectorType &raw_residual) const
+  ContactReport::Adhesion
+  ContactReport::adhesion(const VectorType &raw_residual) const
   {
     // Pulls within round-off of the total contact force (1e-9 of it) are
     // not counted.
     std::vector<double> pulls;
     double              push = 0;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
         {
-          const double force = contact_force(c, raw_residual);
+          const double force = contact.contact_force(c, raw_residual);
           if (force < 0)
             pulls.push_back(-force);
           else
             push += force;
         }
-    const MPI_Comm comm = communicator();
+    const MPI_Comm comm = contact.communicator();
     push                = Utilities::MPI::sum(push, comm);
     unsigned int n      = 0;
     double       pull   = 0;
@@ -141,57 +149,60 @@ namespace RestShape
   }
 
   std::pair<unsigned int, double>
-  ContactProblem::fixed_plane_nodes() const
+  ContactReport::fixed_plane_nodes() const
   {
     unsigned int n        = 0;
     double       distance = 0;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active && c.planes.fixed())
         {
           ++n;
           distance = std::max(distance, std::abs(c.gap));
         }
-    const MPI_Comm comm = communicator();
+    const MPI_Comm comm = contact.communicator();
     return {Utilities::MPI::sum(n, comm), Utilities::MPI::max(distance, comm)};
   }
 
   unsigned int
-  ContactProblem::n_candidates() const
+  ContactReport::n_candidates() const
   {
-    return count_owned([](const Candidate &) { return true; });
+    return contact.count_owned(
+      [](const ContactProblem::Candidate &) { return true; });
   }
 
   unsigned int
-  ContactProblem::n_outside() const
+  ContactReport::n_outside() const
   {
-    return count_owned([this](const Candidate &c) {
-      return !c.removed && c.gap < -gap_tolerance;
+    return contact.count_owned([this](const ContactProblem::Candidate &c) {
+      return !c.removed && c.gap < -contact.gap_tolerance;
     });
   }
 
   Tensor<1, 3>
-  ContactProblem::total_force(const VectorType &raw_residual) const
+  ContactReport::total_force(const VectorType &raw_residual) const
   {
     Tensor<1, 3> force;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
-        force += reaction(c, raw_residual);
-    const MPI_Comm comm = communicator();
+        force += contact.reaction(c, raw_residual);
+    const MPI_Comm comm = contact.communicator();
     for (unsigned int k = 0; k < 3; ++k)
       force[k] = Utilities::MPI::sum(force[k], comm);
     return force;
   }
 
   std::map<Label, Tensor<1, 3>>
-  ContactProblem::force_by_label(const VectorType &raw_residual) const
+  ContactReport::force_by_label(const VectorType &raw_residual) const
   {
     // The labels of the cells around each active node (by its x DoF).
     std::map<types::global_dof_index, std::set<Label>> labels;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
         labels[c.node.dofs[0]];
-    std::vector<types::global_dof_index> dofs(forward.fe().n_dofs_per_cell());
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    std::vector<types::global_dof_index> dofs(
+      contact.discretization.fe().n_dofs_per_cell());
+    for (const auto &cell :
+         contact.discretization.dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         {
           cell->get_dof_indices(dofs);
@@ -200,17 +211,17 @@ namespace RestShape
               it->second.insert(cell->material_id());
         }
     std::map<Label, Tensor<1, 3>> force;
-    for (const Label label : forward.mesh().labels())
+    for (const Label label : contact.discretization.mesh().labels())
       force[label];
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
         {
           const std::set<Label> &around = labels[c.node.dofs[0]];
-          const Tensor<1, 3>     f      = reaction(c, raw_residual);
+          const Tensor<1, 3>     f      = contact.reaction(c, raw_residual);
           for (const Label label : around)
             force[label] += f / double(around.size());
         }
-    const MPI_Comm comm = communicator();
+    const MPI_Comm comm = contact.communicator();
     for (auto &[label, f] : force)
       for (unsigned int k = 0; k < 3; ++k)
         f[k] = Utilities::MPI::sum(f[k], comm);
@@ -218,17 +229,17 @@ namespace RestShape
   }
 
   double
-  ContactProblem::max_penetration(const bool eligible_only) const
+  ContactReport::max_penetration(const bool eligible_only) const
   {
     double p = -std::numeric_limits<double>::max();
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && !c.removed && (c.eligible || !eligible_only))
         p = std::max(p, -c.gap);
-    return Utilities::MPI::max(p, communicator()) + 0.;
+    return Utilities::MPI::max(p, contact.communicator()) + 0.;
   }
 
   std::vector<double>
-  ContactProblem::pressures(const VectorType &raw_residual) const
+  ContactReport::pressures(const VectorType &raw_residual) const
   {
     // The pressure of an active node is its contact force over int phi dA
     // on the faces that face the obstacle (outward normal against the
@@ -238,13 +249,14 @@ namespace RestShape
     // quadratic triangles carry no force under a smooth pressure) the
     // pressure is the mean of the other nodes of those faces; an active node
     // without such a face uses its lumped area.
-    const unsigned int  n = candidates.size();
+    const unsigned int  n = contact.candidates.size();
     std::vector<double> lumped(n, 0.), integral(n, 0.), pressure(n, 0.);
     std::vector<bool>   in_face(n, false);
-    for (const Face &face : faces)
+    for (const ContactProblem::Face &face : contact.faces)
       for (unsigned int k = 0; k < face.nodes.size(); ++k)
         {
-          const Candidate &c = candidates[face.nodes[k]];
+          const ContactProblem::Candidate &c =
+            contact.candidates[face.nodes[k]];
           if (!c.active || face.normal * c.normal > -0.5)
             continue;
           lumped[face.nodes[k]] += face.lumped[k];
@@ -256,34 +268,36 @@ namespace RestShape
     };
     // Owned nodes: their own pressure; with it, whether it is direct, on
     // the neighbouring ranks (their faces hold only part of it).
-    VectorType shared = forward.zero_vector();
+    VectorType shared = contact.discretization.zero_vector();
     for (unsigned int i = 0; i < n; ++i)
-      if (candidates[i].owned && candidates[i].active)
+      if (contact.candidates[i].owned && contact.candidates[i].active)
         {
-          const double force = contact_force(candidates[i], raw_residual);
+          const double force =
+            contact.contact_force(contact.candidates[i], raw_residual);
           if (direct(i))
             pressure[i] = force / integral[i];
           else if (!in_face[i])
-            pressure[i] = force / candidates[i].area_lumped;
-          shared[candidates[i].node.dofs[0]] = pressure[i];
-          shared[candidates[i].node.dofs[1]] = direct(i) ? 1 : 0;
+            pressure[i] = force / contact.candidates[i].area_lumped;
+          shared[contact.candidates[i].node.dofs[0]] = pressure[i];
+          shared[contact.candidates[i].node.dofs[1]] = direct(i) ? 1 : 0;
         }
     shared.compress(VectorOperation::insert);
-    const VectorType  ghosted = forward.ghosted_copy(shared);
+    const VectorType  ghosted = contact.discretization.ghosted_copy(shared);
     std::vector<bool> is_direct(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const auto &dofs = candidates[i].node.dofs;
-        is_direct[i] = candidates[i].owned ? direct(i) : ghosted[dofs[1]] > 0;
-        if (!candidates[i].owned)
+        const auto &dofs = contact.candidates[i].node.dofs;
+        is_direct[i] =
+          contact.candidates[i].owned ? direct(i) : ghosted[dofs[1]] > 0;
+        if (!contact.candidates[i].owned)
           pressure[i] = ghosted[dofs[0]];
       }
     std::vector<double>       sum(n, 0.);
     std::vector<unsigned int> count(n, 0);
-    for (const Face &face : faces)
+    for (const ContactProblem::Face &face : contact.faces)
       for (const unsigned int i : face.nodes)
         if (in_face[i] && !is_direct[i] &&
-            face.normal * candidates[i].normal <= -0.5)
+            face.normal * contact.candidates[i].normal <= -0.5)
           for (const unsigned int j : face.nodes)
             if (is_direct[j])
               {
@@ -291,50 +305,51 @@ namespace RestShape
                 ++count[i];
               }
     for (unsigned int i = 0; i < n; ++i)
-      if (candidates[i].owned && candidates[i].active && count[i] > 0)
+      if (contact.candidates[i].owned && contact.candidates[i].active &&
+          count[i] > 0)
         pressure[i] = sum[i] / count[i];
     return pressure;
   }
 
   std::pair<double, double>
-  ContactProblem::pressure_range(const VectorType &raw_residual) const
+  ContactReport::pressure_range(const VectorType &raw_residual) const
   {
     const std::vector<double> pressure = pressures(raw_residual);
     double low = std::numeric_limits<double>::max(), high = -low;
-    for (unsigned int i = 0; i < candidates.size(); ++i)
-      if (candidates[i].owned && candidates[i].active)
+    for (unsigned int i = 0; i < contact.candidates.size(); ++i)
+      if (contact.candidates[i].owned && contact.candidates[i].active)
         {
           low  = std::min(low, pressure[i]);
           high = std::max(high, pressure[i]);
         }
-    const MPI_Comm comm = communicator();
+    const MPI_Comm comm = contact.communicator();
     low                 = Utilities::MPI::min(low, comm);
     high                = Utilities::MPI::max(high, comm);
     return high < low ? std::make_pair(0., 0.) : std::make_pair(low, high);
   }
 
   double
-  ContactProblem::contact_radius(const Point<3>     &point,
-                                 const Tensor<1, 3> &direction) const
+  ContactReport::contact_radius(const Point<3>     &point,
+                                const Tensor<1, 3> &direction) const
   {
     const Tensor<1, 3> axis   = direction / direction.norm();
     double             radius = 0;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
         {
           const Tensor<1, 3> r = c.node.position - point;
           radius = std::max(radius, (r - (r * axis) * axis).norm());
         }
-    return Utilities::MPI::max(radius, communicator());
+    return Utilities::MPI::max(radius, contact.communicator());
   }
 
   double
-  ContactProblem::patch_radius(const Tensor<1, 3> &direction) const
+  ContactReport::patch_radius(const Tensor<1, 3> &direction) const
   {
-    const MPI_Comm comm = communicator();
+    const MPI_Comm comm = contact.communicator();
     Tensor<1, 3>   sum;
     double         n = 0;
-    for (const Candidate &c : candidates)
+    for (const ContactProblem::Candidate &c : contact.candidates)
       if (c.owned && c.active)
         {
           sum += c.node.position;
@@ -348,28 +363,31 @@ namespace RestShape
   }
 
   VectorType
-  ContactProblem::nodal_fields(const VectorType &raw_residual,
-                               const double      length_scale) const
+  ContactReport::nodal_fields(const VectorType &raw_residual,
+                              const double      length_scale) const
   {
     const std::vector<double> pressure = pressures(raw_residual);
-    VectorType                fields   = forward.zero_vector();
+    VectorType                fields   = contact.discretization.zero_vector();
     // Off the contact candidates: the signed distance of the node to the
     // obstacle and no pressure. (Not NaN: the writer evaluates each field
     // as sum u_i phi_i, and a NaN at one node of a cell, times phi_i = 0,
     // blanked every node of that cell: all of them at P2.)
-    for (const Node &node : forward.owned_nodes())
+    for (const Node &node : contact.discretization.owned_nodes())
       fields[node.dofs[1]] =
-        obstacle->gap(position(node, forward.displacement())).gap *
+        contact.obstacle
+          ->gap(contact.position(node, contact.forward_state.displacement()))
+          .gap *
         length_scale;
-    for (unsigned int i = 0; i < candidates.size(); ++i)
-      if (candidates[i].owned)
+    for (unsigned int i = 0; i < contact.candidates.size(); ++i)
+      if (contact.candidates[i].owned)
         {
-          const auto &dofs = candidates[i].node.dofs;
-          fields[dofs[0]]  = candidates[i].active ? 1 : 0;
-          fields[dofs[1]]  = candidates[i].gap * length_scale;
+          const auto &dofs = contact.candidates[i].node.dofs;
+          fields[dofs[0]]  = contact.candidates[i].active ? 1 : 0;
+          fields[dofs[1]]  = contact.candidates[i].gap * length_scale;
           fields[dofs[2]]  = pressure[i];
         }
     fields.compress(VectorOperation::insert);
     return fields;
   }
+
 } // namespace RestShape

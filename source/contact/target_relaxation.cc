@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <restshape/contact/target_relaxation.h>
+#include <restshape/fem/nodal_norms.h>
 
 #include <algorithm>
 #include <map>
@@ -13,9 +14,9 @@ namespace RestShape
 {
   using namespace dealii;
 
-  TargetRelaxation::TargetRelaxation(const ForwardProblem &forward,
+  TargetRelaxation::TargetRelaxation(const Discretization &discretization,
                                      const Obstacle       &obstacle)
-    : forward(forward)
+    : discretization(discretization)
     , obstacle(obstacle)
   {
     collect_cell_nodes();
@@ -24,21 +25,22 @@ namespace RestShape
   void
   TargetRelaxation::collect_cell_nodes()
   {
-    const auto &nodes = forward.relevant_nodes();
+    const auto &nodes = discretization.relevant_nodes();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     node_fixed.assign(nodes.size(), true);
     for (unsigned int n = 0; n < nodes.size(); ++n)
       {
         node_of_dof[nodes[n].dofs[0]] = n;
         for (const auto dof : nodes[n].dofs)
-          node_fixed[n] = node_fixed[n] && forward.is_fixed(dof);
+          node_fixed[n] = node_fixed[n] && discretization.is_fixed(dof);
       }
-    const auto &fe   = forward.fe();
+    const auto &fe   = discretization.fe();
     const auto &base = fe.base_element(0);
-    weight           = forward.vertex_weights();
+    weight           = discretization.vertex_weights();
     n_vertices       = weight.front().size();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
@@ -54,15 +56,16 @@ namespace RestShape
                                   std::vector<char> &in_set,
                                   std::string       *where) const
   {
-    const auto  &nodes = forward.relevant_nodes();
-    FEValues<3>  fe_values(forward.mapping(),
-                          forward.fe(),
-                          forward.quadrature(),
+    const auto  &nodes = discretization.relevant_nodes();
+    FEValues<3>  fe_values(discretization.mapping(),
+                          discretization.fe(),
+                          discretization.quadrature(),
                           update_gradients);
     VectorType   marked = writable();
     unsigned int n_bad = 0, n_inverted = 0, c = 0;
     std::string  first;
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       {
         if (!cell->is_locally_owned())
           continue;
@@ -76,7 +79,7 @@ namespace RestShape
           continue;
         fe_values.reinit(cell);
         const double least =
-          ForwardProblem::smallest_jacobian(fe_values, shift);
+          Discretization::smallest_jacobian(fe_values, shift);
         if (least >= minimum_jacobian)
           continue;
         ++n_bad;
@@ -92,12 +95,13 @@ namespace RestShape
             marked[nodes[mine[b]].dofs[0]] += 1.;
       }
     marked.compress(VectorOperation::add);
-    const VectorType ghosted = forward.ghosted_copy(marked);
+    const VectorType ghosted = discretization.ghosted_copy(marked);
     for (unsigned int n = 0; n < nodes.size(); ++n)
       in_set[n] = in_set[n] || ghosted[nodes[n].dofs[0]] > 0;
-    const MPI_Comm comm = forward.mesh().triangulation().get_communicator();
-    n_bad               = Utilities::MPI::sum(n_bad, comm);
-    n_inverted          = Utilities::MPI::sum(n_inverted, comm);
+    const MPI_Comm comm =
+      discretization.mesh().triangulation().get_communicator();
+    n_bad      = Utilities::MPI::sum(n_bad, comm);
+    n_inverted = Utilities::MPI::sum(n_inverted, comm);
     if (where != nullptr)
       for (const std::string &text : Utilities::MPI::all_gather(comm, first))
         if (!text.empty())
@@ -112,7 +116,7 @@ namespace RestShape
   TargetRelaxation::sweep(const VectorType        &shift,
                           const std::vector<char> &in_set) const
   {
-    const auto &nodes = forward.relevant_nodes();
+    const auto &nodes = discretization.relevant_nodes();
     VectorType  sum = writable(), count = writable();
     VectorType  push = writable(), pushes = writable();
     auto        add = [&](VectorType         &v,
@@ -171,8 +175,8 @@ namespace RestShape
       }
     for (VectorType *v : {&sum, &count, &push, &pushes})
       v->compress(VectorOperation::add);
-    VectorType      result = forward.owned_copy(shift);
-    const IndexSet &owned  = forward.locally_owned_dofs();
+    VectorType      result = discretization.owned_copy(shift);
+    const IndexSet &owned  = discretization.locally_owned_dofs();
     for (unsigned int n = 0; n < nodes.size(); ++n)
       if (owned.is_element(nodes[n].dofs[0]) &&
           count[nodes[n].dofs[0]] + pushes[nodes[n].dofs[0]] > 0)
@@ -188,8 +192,9 @@ namespace RestShape
             }
           keep_inside(node.position, value);
           for (unsigned int k = 0; k < 3; ++k)
-            result[node.dofs[k]] =
-              forward.is_fixed(node.dofs[k]) ? shift[node.dofs[k]] : value[k];
+            result[node.dofs[k]] = discretization.is_fixed(node.dofs[k]) ?
+                                     shift[node.dofs[k]] :
+                                     value[k];
         }
     result.compress(VectorOperation::insert);
     return result;
@@ -199,9 +204,9 @@ namespace RestShape
   TargetRelaxation::writable() const
   {
     VectorType v;
-    v.reinit(forward.locally_owned_dofs(),
-             forward.locally_relevant_dofs(),
-             forward.mesh().triangulation().get_communicator(),
+    v.reinit(discretization.locally_owned_dofs(),
+             discretization.locally_relevant_dofs(),
+             discretization.mesh().triangulation().get_communicator(),
              true);
     return v;
   }
@@ -219,11 +224,12 @@ namespace RestShape
   TargetRelaxation::relax(VectorType &shift) const
   {
     TargetRelaxationResult result;
-    const auto            &nodes = forward.relevant_nodes();
-    const MPI_Comm    comm = forward.mesh().triangulation().get_communicator();
+    const auto            &nodes = discretization.relevant_nodes();
+    const MPI_Comm         comm =
+      discretization.mesh().triangulation().get_communicator();
     std::vector<char> in_set(nodes.size(), 0);
-    const VectorType  projected = forward.owned_copy(shift);
-    VectorType        ghosted   = forward.ghosted_copy(shift);
+    const VectorType  projected = discretization.owned_copy(shift);
+    VectorType        ghosted   = discretization.ghosted_copy(shift);
     std::tie(result.below_threshold, result.inverted_before) =
       mark_inverted(ghosted, in_set, &result.where);
     // The set's size over all ranks (nodes shared by ranks counted on
@@ -254,14 +260,15 @@ namespace RestShape
       }
     // Hanging nodes follow their parents; fixed DoFs stay. The counts
     // then describe the target the inverse iteration aims at.
-    forward.base_constraints().distribute(shift);
+    discretization.base_constraints().distribute(shift);
     ghosted = shift;
     std::tie(result.below_threshold, result.inverted_after) =
       mark_inverted(ghosted, in_set, &result.where);
-    VectorType change = forward.owned_copy(shift);
+    VectorType change = discretization.owned_copy(shift);
     change -= projected;
-    const auto moved   = forward.nodal_norms_above(change, negligible_change);
-    result.moved_nodes = moved.n;
+    const auto moved =
+      nodal_norms_above(discretization, change, negligible_change);
+    result.moved_nodes    = moved.n;
     result.largest_change = moved.max;
     return result;
   }

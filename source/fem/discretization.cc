@@ -8,15 +8,32 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
 
+#include <restshape/base/units.h>
 #include <restshape/fem/discretization.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
 namespace RestShape
 {
   using namespace dealii;
+
+  std::string
+  cell_location_text(const types::material_id label, const Point<3> &center)
+  {
+    char text[100];
+    std::snprintf(text,
+                  sizeof(text),
+                  "label %u at (%.1f, %.1f, %.1f) mm of the mesh",
+                  static_cast<unsigned int>(label),
+                  mm_per_m * center[0],
+                  mm_per_m * center[1],
+                  mm_per_m * center[2]);
+    return text;
+  }
+
   using Tensor2 = Tensor<2, 3>;
 
   namespace
@@ -30,16 +47,15 @@ namespace RestShape
     }
   } // namespace
 
-  Discretization::Discretization(const ForwardParameters &parameters,
-                                 LabelledMesh            &mesh)
-    : parameters(parameters)
+  Discretization::Discretization(const DiscretizationParameters &parameters,
+                                 LabelledMesh                   &mesh)
+    : settings(parameters)
     , labelled_mesh(mesh)
     , comm(mesh.triangulation().get_communicator())
-    , fe_(*scalar_element(mesh.is_simplex(), parameters.discretization.degree),
-          3)
+    , fe_(*scalar_element(mesh.is_simplex(), parameters.degree), 3)
     , dof_handler_(mesh.triangulation())
   {
-    const unsigned int degree = parameters.discretization.degree;
+    const unsigned int degree = parameters.degree;
     if (mesh.is_simplex())
       {
         mapping_ = std::make_unique<MappingFE<3>>(FE_SimplexP<3>(1));
@@ -143,7 +159,7 @@ namespace RestShape
       {
         if (cell->is_artificial())
           continue;
-        for (const auto &fixed : parameters.boundary.fixed_labels)
+        for (const auto &fixed : settings.fixed_labels)
           if (fixed.label == cell->material_id())
             {
               cell->get_dof_indices(dofs);

@@ -1,4 +1,5 @@
-// The parameters of subsection Discretization.
+// The parameters of subsection Discretization, and the fixed labels of
+// Boundary conditions (the discretisation's constraints).
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/command_line.h>
@@ -41,6 +42,26 @@ namespace RestShape
       "in SOFA and Mueller et al. 2002 (no dR term; linear convergence), "
       "kept for comparison; other laws use their exact tangent.");
     prm.leave_subsection();
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Fixed labels",
+                      "",
+                      Patterns::Anything(),
+                      "Labels whose nodes are fixed (zero displacement): "
+                      "'label' fixes all components of every node of the "
+                      "cells with that label, 'label:xy' only the listed "
+                      "components; a label may be a range. Example: "
+                      "'3, 5:xy, 7-9'.");
+    prm.leave_subsection();
+  }
+
+  bool
+  DiscretizationParameters::fully_fixed(const Label label) const
+  {
+    for (const FixedLabel &f : fixed_labels)
+      if (f.label == label && f.components[0] && f.components[1] &&
+          f.components[2])
+        return true;
+    return false;
   }
 
   void
@@ -53,6 +74,10 @@ namespace RestShape
                    tangent_name == "projected" ? TangentType::projected :
                    tangent_name == "adaptive"  ? TangentType::adaptive :
                                                  TangentType::consistent;
+    prm.leave_subsection();
+    prm.enter_subsection("Boundary conditions");
+    fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
+                                      "Boundary conditions/Fixed labels");
     prm.leave_subsection();
   }
 } // namespace RestShape

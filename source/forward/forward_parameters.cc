@@ -7,8 +7,6 @@ namespace RestShape
   {
     DiscretizationParameters::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm);
-    BoundaryParameters::declare_parameters(prm);
-    LoadParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
   }
 
@@ -18,9 +16,7 @@ namespace RestShape
   {
     discretization.parse_parameters(prm);
     materials.parse_parameters(prm);
-    boundary.parse_parameters(prm);
-    loads.parse_parameters(prm);
+    environment.parse_parameters(prm, length_unit);
     solver.parse_parameters(prm);
-    loads.fluid_level *= length_unit;
   }
 } // namespace RestShape

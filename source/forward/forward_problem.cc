@@ -26,7 +26,8 @@ namespace RestShape
                                  const MaterialTable     &materials,
                                  TimerOutput             &timer,
                                  ConditionalOStream      &pcout)
-    : Discretization(parameters, mesh)
+    : parameters(parameters)
+    , discretization_(parameters.discretization, mesh)
     , material_table(materials)
     , timer(timer)
     , pcout(pcout)
@@ -55,16 +56,23 @@ namespace RestShape
     TimerOutput::Scope scope(timer, "Setup");
     // The solver's factorisation refers to the old matrix: release it first.
     linear_solver.reset();
-    setup_dofs();
+    discretization_.setup_dofs();
     make_step_constraints();
 
-    DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_base, true);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned_dofs,
-                                               comm,
-                                               relevant_dofs);
-    tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
+    DynamicSparsityPattern dsp(discretization_.locally_relevant_dofs());
+    DoFTools::make_sparsity_pattern(discretization_.dof_handler(),
+                                    dsp,
+                                    discretization_.base_constraints(),
+                                    true);
+    SparsityTools::distribute_sparsity_pattern(
+      dsp,
+      discretization_.locally_owned_dofs(),
+      discretization_.communicator(),
+      discretization_.locally_relevant_dofs());
+    tangent.reinit(discretization_.locally_owned_dofs(),
+                   discretization_.locally_owned_dofs(),
+                   dsp,
+                   discretization_.communicator());
     scatter.forget();
 
     for (VectorType *v : {&rhs_newton,
@@ -73,12 +81,17 @@ namespace RestShape
                           &external_condensed,
                           &d,
                           &w})
-      v->reinit(owned_dofs, comm);
-    d_ghost.reinit(owned_dofs, relevant_dofs, comm);
-    w_ghost.reinit(owned_dofs, relevant_dofs, comm);
+      v->reinit(discretization_.locally_owned_dofs(),
+                discretization_.communicator());
+    d_ghost.reinit(discretization_.locally_owned_dofs(),
+                   discretization_.locally_relevant_dofs(),
+                   discretization_.communicator());
+    w_ghost.reinit(discretization_.locally_owned_dofs(),
+                   discretization_.locally_relevant_dofs(),
+                   discretization_.communicator());
     // The buffers copy into the Trilinos vectors entry by entry: both store
     // the owned entries in the order of their (contiguous) global indices.
-    AssertThrow(owned_dofs.is_contiguous(),
+    AssertThrow(discretization_.locally_owned_dofs().is_contiguous(),
                 ExcMessage("the locally owned DoFs are not contiguous"));
     for (BufferType *b : {&d_buffer,
                           &w_buffer,
@@ -87,8 +100,11 @@ namespace RestShape
                           &external_buffer,
                           &rhs_buffer,
                           &magnitude_buffer})
-      b->reinit(owned_dofs, relevant_dofs, comm);
-    cell_local_indices.reinit(dof_handler_, *raw_buffer.get_partitioner());
+      b->reinit(discretization_.locally_owned_dofs(),
+                discretization_.locally_relevant_dofs(),
+                discretization_.communicator());
+    cell_local_indices.reinit(discretization_.dof_handler(),
+                              *raw_buffer.get_partitioner());
     current_load = LoadState();
 
     setup_load_terms();
@@ -100,7 +116,7 @@ namespace RestShape
       std::make_unique<LinearSolver>(solver,
                                      parameters.discretization.degree,
                                      &timer);
-    linear_solver->set_symmetric(tangent_is_symmetric());
+    linear_solver->set_symmetric(load_set.symmetric());
     // auto's choice is a matter of speed: where CG + AMG fails, the direct
     // solver, which it would have taken on a smaller mesh, takes over.
     if (parameters.solver.linear_solver == LinearSolverType::automatic &&
@@ -116,13 +132,13 @@ namespace RestShape
   {
     if (parameters.solver.linear_solver != LinearSolverType::automatic)
       return parameters.solver.linear_solver;
-    const types::global_dof_index n      = dof_handler_.n_dofs();
+    const types::global_dof_index n = discretization_.dof_handler().n_dofs();
     const unsigned int            degree = parameters.discretization.degree;
     const unsigned int            limit  = auto_direct_dofs(degree);
     // A direction that no fixed label holds leaves the tangent singular
     // until contact or the support acts: CG cannot solve that, the direct
     // solver can.
-    const std::array<bool, 3> held     = fixed_components();
+    const std::array<bool, 3> held     = discretization_.fixed_components();
     const bool                all_held = held[0] && held[1] && held[2];
     const LinearSolverType    chosen   = n <= limit || !all_held ?
                                            LinearSolverType::direct :
@@ -141,11 +157,12 @@ namespace RestShape
   ForwardProblem::make_step_constraints()
   {
     constraints_newton.clear();
-    constraints_newton.reinit(relevant_dofs);
+    constraints_newton.reinit(discretization_.locally_relevant_dofs());
     if (contact != nullptr)
-      contact->add_constraints(constraints_newton, constraints_base);
+      contact->add_constraints(constraints_newton,
+                               discretization_.base_constraints());
     constraints_newton.merge(
-      constraints_base,
+      discretization_.base_constraints(),
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
     constraints_newton.close();
     return constraints_newton;
@@ -156,21 +173,28 @@ namespace RestShape
   {
     // Translations and rotations about the centre of the owned nodes.
     Point<3> center;
-    for (const Node &node : owned_nodes_)
+    for (const Node &node : discretization_.owned_nodes())
       center += node.position;
-    const double n = Utilities::MPI::sum(double(owned_nodes_.size()), comm);
+    const double n =
+      Utilities::MPI::sum(double(discretization_.owned_nodes().size()),
+                          discretization_.communicator());
     for (unsigned int c = 0; c < 3; ++c)
-      center[c] = Utilities::MPI::sum(center[c], comm) / n;
+      center[c] =
+        Utilities::MPI::sum(center[c], discretization_.communicator()) / n;
 
     std::vector<std::vector<double>> modes(
-      6, std::vector<double>(owned_dofs.n_elements(), 0.));
-    for (const Node &node : owned_nodes_)
+      6,
+      std::vector<double>(discretization_.locally_owned_dofs().n_elements(),
+                          0.));
+    for (const Node &node : discretization_.owned_nodes())
       {
         const Tensor<1, 3> r = node.position - center;
         for (unsigned int c = 0; c < 3; ++c)
           {
-            const auto i = owned_dofs.index_within_set(node.dofs[c]);
-            modes[c][i]  = 1;
+            const auto i =
+              discretization_.locally_owned_dofs().index_within_set(
+                node.dofs[c]);
+            modes[c][i] = 1;
             for (unsigned int axis = 0; axis < 3; ++axis)
               {
                 Tensor<1, 3> e;
@@ -218,31 +242,10 @@ namespace RestShape
     total_energy = std::numeric_limits<double>::quiet_NaN();
   }
 
-  bool
-  ForwardProblem::rest_shape_is_valid(const VectorType &rest,
-                                      unsigned int     &n_bad,
-                                      std::string      *where) const
+  double
+  ForwardProblem::potential_energy() const
   {
-    const VectorType ghosted = ghosted_copy(rest);
-    FEValues<3> fe_values(*mapping_, fe_, cell_quadrature, update_gradients);
-    n_bad = 0;
-    std::string first;
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          if (!(smallest_jacobian(fe_values, ghosted) > 0) && n_bad++ == 0)
-            first = cell_location_text(cell->material_id(), cell->center());
-        }
-    n_bad = Utilities::MPI::sum(n_bad, comm);
-    if (where != nullptr && n_bad > 0)
-      for (const std::string &text : Utilities::MPI::all_gather(comm, first))
-        if (!text.empty())
-          {
-            *where = text;
-            break;
-          }
-    return n_bad == 0;
+    return total_energy;
   }
 
   const MatrixType &

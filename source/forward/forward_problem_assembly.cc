@@ -137,10 +137,10 @@ namespace RestShape
           p.A       = matrix ? &A : nullptr;
           p.JxW     = values.JxW(q);
           p.dV_rest = det_G * p.JxW;
-          p.f_body =
-            varies ?
-              body_force(*cell, values.quadrature_point(q), current_load) :
-              cell_body_force;
+          p.f_body  = varies ? load_set.body_force(*cell,
+                                                  values.quadrature_point(q),
+                                                  current_load) :
+                               cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
@@ -159,7 +159,7 @@ namespace RestShape
         scratch.fe_values.reinit(mesh_cell);
         center = cell->center();
       }
-    cell_body_force  = body_force(*cell, center, current_load);
+    cell_body_force  = load_set.body_force(*cell, center, current_load);
     const bool valid = scratch.simplex != nullptr ?
                          add_points(*scratch.simplex) :
                          add_points(scratch.fe_values);
@@ -174,37 +174,16 @@ namespace RestShape
     if (matrix)
       elastic.matrix(copy.cell_matrix);
 
-    assemble_load_terms(cell, scratch, copy, matrix);
-  }
-
-  void
-  ForwardProblem::assemble_load_terms(const CellIterator &cell,
-                                      ScratchData        &scratch,
-                                      CopyData           &copy,
-                                      const bool          matrix) const
-  {
-    const LoadCell c{cell,
-                     scratch.d_cell,
-                     scratch.w_cell,
-                     current_load,
-                     matrix,
-                     scratch.faces,
-                     copy.cell_matrix,
-                     copy.cell_rhs,
-                     copy.cell_external,
-                     copy.energy};
-    // Dead loads (gravity, a dead pressure): their potential is
-    // -f_ext . (d - w), the work done from the rest shape. A follower
-    // pressure or a support adds its own potential.
-    for (const auto &term : load_terms)
-      if (term->dead())
-        term->assemble_faces(c);
-    for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
-      copy.energy -=
-        copy.cell_external(i) * (scratch.d_cell[i] - scratch.w_cell[i]);
-    for (const auto &term : load_terms)
-      if (!term->dead())
-        term->assemble_faces(c);
+    load_set.assemble_faces({cell,
+                             scratch.d_cell,
+                             scratch.w_cell,
+                             current_load,
+                             matrix,
+                             scratch.faces,
+                             copy.cell_matrix,
+                             copy.cell_rhs,
+                             copy.cell_external,
+                             copy.energy});
   }
 
   ForwardProblem::ScratchData &
@@ -212,10 +191,11 @@ namespace RestShape
   {
     std::shared_ptr<ScratchData> &scratch = thread_scratch.get();
     if (!scratch)
-      scratch = std::make_shared<ScratchData>(*mapping_,
-                                              fe_,
-                                              cell_quadrature,
-                                              face_quadrature_);
+      scratch =
+        std::make_shared<ScratchData>(discretization_.mapping(),
+                                      discretization_.fe(),
+                                      discretization_.quadrature(),
+                                      discretization_.face_quadrature());
     return *scratch;
   }
 
@@ -245,11 +225,13 @@ namespace RestShape
         rhs_buffer = 0;
       }
     for (const auto &[lookup, constraints] :
-         {std::pair(&lookup_hanging, &constraints_hanging),
-          std::pair(&lookup_base, &constraints_base),
-          std::pair(&lookup_newton, &constraints_newton)})
+         {std::pair(&lookup_hanging, &discretization_.hanging_constraints()),
+          std::pair(&lookup_base, &discretization_.base_constraints()),
+          std::pair(&lookup_newton,
+                    static_cast<const AffineConstraints<double> *>(
+                      &constraints_newton))})
       lookup->reinit(*constraints, *raw_buffer.get_partitioner());
-    current_body_force_varies = body_force_varies(current_load);
+    current_body_force_varies = load_set.body_force_varies(current_load);
     bool          all_valid   = true;
     double        energy      = 0;
     InvertedCells inverted;
@@ -259,8 +241,9 @@ namespace RestShape
     {};
     WorkStream::run(
       CellFilter(IteratorFilters::LocallyOwnedCell(),
-                 dof_handler_.begin_active()),
-      CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler_.end()),
+                 discretization_.dof_handler().begin_active()),
+      CellFilter(IteratorFilters::LocallyOwnedCell(),
+                 discretization_.dof_handler().end()),
       [this, what](const CellFilter &cell, NoScratch &, CopyData &c) {
         local_assemble(cell, scratch_of_this_thread(), c, what);
       },
@@ -299,7 +282,7 @@ namespace RestShape
                       rhs_buffer);
       },
       NoScratch(),
-      CopyData(fe_.n_dofs_per_cell()),
+      CopyData(discretization_.fe().n_dofs_per_cell()),
       2 * MultithreadInfo::n_threads(),
       64);
 
@@ -315,8 +298,9 @@ namespace RestShape
         tangent.compress(VectorOperation::add);
         finish(rhs_buffer, rhs_newton);
       }
-    total_energy = Utilities::MPI::sum(energy, comm);
-    if (Utilities::MPI::min(all_valid ? 1 : 0, comm) == 1)
+    total_energy = Utilities::MPI::sum(energy, discretization_.communicator());
+    if (Utilities::MPI::min(all_valid ? 1 : 0,
+                            discretization_.communicator()) == 1)
       return true;
     // One inverted cell to name: that of the lowest rank that has one.
     const std::vector<double> mine = {double(inverted.count),
@@ -325,7 +309,8 @@ namespace RestShape
                                       inverted.center[2],
                                       double(inverted.label)};
     inverted_cells.count           = 0;
-    for (const auto &r : Utilities::MPI::all_gather(comm, mine))
+    for (const auto &r :
+         Utilities::MPI::all_gather(discretization_.communicator(), mine))
       {
         if (r[0] > 0 && inverted_cells.count == 0)
           {
@@ -338,17 +323,10 @@ namespace RestShape
   }
 
   bool
-  ForwardProblem::evaluate_residual()
+  ForwardProblem::evaluate(const bool tangent)
   {
     make_step_constraints();
-    return assemble(Assemble::residual);
+    return assemble(tangent ? Assemble::residual_and_matrix :
+                              Assemble::residual);
   }
-
-  bool
-  ForwardProblem::evaluate_with_tangent()
-  {
-    make_step_constraints();
-    return assemble(Assemble::residual_and_matrix);
-  }
-
 } // namespace RestShape

@@ -4,6 +4,7 @@
 
 #include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/forward/forward_results.h>
 
 #include <cstdio>
 #include <limits>
@@ -11,20 +12,6 @@
 namespace RestShape
 {
   using namespace dealii;
-
-  std::string
-  cell_location_text(const types::material_id label, const Point<3> &center)
-  {
-    char text[100];
-    std::snprintf(text,
-                  sizeof(text),
-                  "label %u at (%.1f, %.1f, %.1f) mm of the mesh",
-                  static_cast<unsigned int>(label),
-                  mm_per_m * center[0],
-                  mm_per_m * center[1],
-                  mm_per_m * center[2]);
-    return text;
-  }
 
   // ------------------------------------------------------------------
   // NewtonSystem
@@ -41,7 +28,7 @@ namespace RestShape
   std::string
   ForwardProblem::compression_text() const
   {
-    const Compression c = most_compressed_cell();
+    const Compression c = most_compressed_cell(*this);
     char              text[64];
     std::snprintf(text, sizeof(text), "det F = %.3g, ", c.det_F);
     return text + c.where;
@@ -78,7 +65,7 @@ namespace RestShape
   ForwardProblem::resolution() const
   {
     return std::numeric_limits<double>::epsilon() *
-           labelled_mesh.minimum_cell_diameter();
+           discretization_.mesh().minimum_cell_diameter();
   }
 
   // ------------------------------------------------------------------
@@ -89,6 +76,8 @@ namespace RestShape
   {
     const LoadState  start_load = current_load;
     const VectorType w_start    = w;
+    // An opening of the skull may have turned the tangent non-symmetric.
+    linear_solver->set_symmetric(load_set.symmetric());
     return newton_solver.solve_load_steps([&](const double s) {
       current_load = between(start_load, target_load, s);
       w            = w_start;
@@ -119,7 +108,9 @@ namespace RestShape
         pcout << "    Newton from the initial guess failed (" << first.failure
               << "); starting again from the unloaded state" << std::endl;
       }
-    set_state(zero_vector(), zero_vector(), LoadState());
+    set_state(discretization_.zero_vector(),
+              discretization_.zero_vector(),
+              LoadState());
     if (contact != nullptr)
       contact->reset();
     SolveStatistics stats = solve(load, rest);
@@ -140,6 +131,7 @@ namespace RestShape
     const bool valid         = assemble(Assemble::residual_and_matrix);
     tangent_type             = chosen;
     AssertThrow(valid, ExcMessage("an inverted cell in an equilibrium"));
+    linear_solver->set_symmetric(load_set.symmetric());
     linear_solver->prepare(tangent);
   }
 

@@ -22,9 +22,10 @@ namespace RestShape
 
   void
   parse_registered_parameters(dealii::ParameterHandler &prm,
-                              ForwardParameters        &parameters)
+                              ForwardParameters        &parameters,
+                              const double              length_unit)
   {
     parse_material_law_parameters(prm, parameters.materials);
-    parameters.load_terms = parse_load_terms(prm);
+    parameters.load_terms = parse_load_terms(prm, length_unit);
   }
 } // namespace RestShape

@@ -36,22 +36,23 @@ namespace RestShape
     VectorType
     lumped_mass(const ForwardProblem &forward)
     {
-      VectorType                           mass = forward.zero_vector();
-      FEValues<3>                          fv(forward.mapping(),
-                     forward.fe(),
-                     forward.quadrature(),
+      VectorType         mass = forward.discretization().zero_vector();
+      FEValues<3>        fv(forward.discretization().mapping(),
+                     forward.discretization().fe(),
+                     forward.discretization().quadrature(),
                      update_values | update_JxW_values);
-      const unsigned int                   n = forward.fe().n_dofs_per_cell();
+      const unsigned int n = forward.discretization().fe().n_dofs_per_cell();
       std::vector<types::global_dof_index> dofs(n);
       Vector<double>                       diagonal(n);
-      for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      for (const auto &cell :
+           forward.discretization().dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fv.reinit(cell);
             cell->get_dof_indices(dofs);
             const double rho =
               forward.materials().density(cell->material_id()) *
-              forward.mesh().mass_ratio(*cell);
+              forward.discretization().mesh().mass_ratio(*cell);
             double volume = 0, sum = 0;
             diagonal = 0;
             for (const unsigned int q : fv.quadrature_point_indices())
@@ -76,7 +77,8 @@ namespace RestShape
     AffineConstraints<double>
     homogeneous(const ForwardProblem &forward)
     {
-      AffineConstraints<double> h(forward.locally_relevant_dofs());
+      AffineConstraints<double> h(
+        forward.discretization().locally_relevant_dofs());
       for (const auto &line : forward.newton_constraints().get_lines())
         {
           h.add_line(line.index);
@@ -150,14 +152,14 @@ namespace RestShape
     const AffineConstraints<double> constraints = homogeneous(forward);
     VectorType                      M           = lumped_mass(forward);
     // Constrained DoFs carry no mass: their modes are infinitely stiff.
-    for (const auto i : forward.locally_owned_dofs())
+    for (const auto i : forward.discretization().locally_owned_dofs())
       if (constraints.is_constrained(i))
         M[i] = 0;
     M.compress(VectorOperation::insert);
 
     // A start vector that does not depend on the number of ranks.
-    VectorType q = forward.zero_vector();
-    for (const auto i : forward.locally_owned_dofs())
+    VectorType q = forward.discretization().zero_vector();
+    for (const auto i : forward.discretization().locally_owned_dofs())
       q[i] = std::sin(12.9898 * i + 78.233) + 0.5;
     q.compress(VectorOperation::insert);
     constraints.distribute(q);
@@ -169,7 +171,8 @@ namespace RestShape
     result.exact_solves       = exact;
     std::vector<VectorType> Q = {q};
     std::vector<double>     alpha, beta;
-    VectorType z = forward.zero_vector(), b = forward.zero_vector();
+    VectorType              z = forward.discretization().zero_vector(),
+               b              = forward.discretization().zero_vector();
     for (unsigned int j = 0; j < steps; ++j)
       {
         // z = K^-1 M q_j, then into the constrained space. (M is zero at
@@ -225,15 +228,16 @@ namespace RestShape
     result.smallest_eigenvalue = 1 / theta[k];
 
     // The mode and where it is largest.
-    VectorType mode = forward.zero_vector();
+    VectorType mode = forward.discretization().zero_vector();
     for (unsigned int i = 0; i < m; ++i)
       mode.add(S(i, k), Q[i]);
     double largest = 0;
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         forward.discretization().dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           {
-            if (!forward.locally_owned_dofs().is_element(
+            if (!forward.discretization().locally_owned_dofs().is_element(
                   cell->vertex_dof_index(v, 0)))
               continue;
             Tensor<1, 3> value;
@@ -246,8 +250,10 @@ namespace RestShape
                 result.label = cell->material_id();
               }
           }
-    const MPI_Comm comm =
-      forward.dof_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm = forward.discretization()
+                            .dof_handler()
+                            .get_triangulation()
+                            .get_communicator();
     const std::vector<double> mine = {largest,
                                       result.peak[0],
                                       result.peak[1],

@@ -26,20 +26,23 @@ namespace RestShape
                                const std::vector<const VectorType *> &fields)
     : n_fields(fields.size())
   {
-    const DoFHandler<3> &dofs = forward.dof_handler();
+    const DoFHandler<3> &dofs = forward.discretization().dof_handler();
     const auto          &tria = dofs.get_triangulation();
-    if (forward.mesh().is_simplex())
+    if (forward.discretization().mesh().is_simplex())
       {
         std::vector<VectorType> relevant(n_fields);
         for (std::size_t f = 0; f < n_fields; ++f)
-          relevant[f] = forward.ghosted_copy(forward.owned_copy(*fields[f]));
-        const unsigned int dofs_per_cell = forward.fe().n_dofs_per_cell();
+          relevant[f] = forward.discretization().ghosted_copy(
+            forward.discretization().owned_copy(*fields[f]));
+        const unsigned int dofs_per_cell =
+          forward.discretization().fe().n_dofs_per_cell();
         std::vector<types::global_dof_index> indices(dofs_per_cell);
         n_old_cells = tria.n_global_active_cells();
         for (const auto &cell : dofs.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              OldCell &old = old_cells[forward.mesh().cell_index(*cell)];
+              OldCell &old =
+                old_cells[forward.discretization().mesh().cell_index(*cell)];
               for (unsigned int v = 0; v < 4; ++v)
                 old.vertices[v] = cell->vertex(v);
               cell->get_dof_indices(indices);
@@ -53,10 +56,10 @@ namespace RestShape
 
     for (const VectorType *field : fields)
       {
-        inputs.emplace_back(forward.locally_owned_dofs(),
-                            forward.locally_relevant_dofs(),
+        inputs.emplace_back(forward.discretization().locally_owned_dofs(),
+                            forward.discretization().locally_relevant_dofs(),
                             tria.get_communicator());
-        const VectorType owned = forward.owned_copy(*field);
+        const VectorType owned = forward.discretization().owned_copy(*field);
         inputs.back()          = owned; // not a temporary: see above
       }
     if (dynamic_cast<const parallel::distributed::Triangulation<3> *>(&tria))
@@ -81,11 +84,11 @@ namespace RestShape
   StateTransfer::interpolate(const ForwardProblem &forward)
   {
     std::vector<VectorType> out;
-    if (forward.mesh().is_simplex())
+    if (forward.discretization().mesh().is_simplex())
       out = interpolate_tetrahedra(forward);
     else
       {
-        out.assign(n_fields, forward.zero_vector());
+        out.assign(n_fields, forward.discretization().zero_vector());
         if (distributed)
           {
             std::vector<VectorType *> pointers;
@@ -99,7 +102,7 @@ namespace RestShape
     for (VectorType &v : out)
       {
         v.compress(VectorOperation::insert);
-        forward.base_constraints().distribute(v);
+        forward.discretization().base_constraints().distribute(v);
       }
     return out;
   }
@@ -107,15 +110,16 @@ namespace RestShape
   std::vector<VectorType>
   StateTransfer::interpolate_tetrahedra(const ForwardProblem &forward) const
   {
-    const DoFHandler<3> &dofs          = forward.dof_handler();
-    const FESystem<3>   &fe            = forward.fe();
+    const DoFHandler<3> &dofs          = forward.discretization().dof_handler();
+    const FESystem<3>   &fe            = forward.discretization().fe();
     const unsigned int   dofs_per_cell = fe.n_dofs_per_cell();
     AssertThrow(dofs.get_triangulation().n_global_active_cells() ==
                   8 * n_old_cells,
                 ExcMessage("StateTransfer: a tetrahedral mesh must be "
                            "refined once, every cell into eight"));
-    const IndexSet                      &owned = forward.locally_owned_dofs();
-    std::vector<VectorType>              out(n_fields, forward.zero_vector());
+    const IndexSet &owned = forward.discretization().locally_owned_dofs();
+    std::vector<VectorType>              out(n_fields,
+                                forward.discretization().zero_vector());
     std::vector<bool>                    done(owned.n_elements(), false);
     std::vector<types::global_dof_index> indices(dofs_per_cell);
     std::vector<double>                  shape(dofs_per_cell);
@@ -125,7 +129,7 @@ namespace RestShape
         if (!cell->is_locally_owned())
           continue;
         const OldCell &parent =
-          old_cells.at(forward.mesh().cell_index(*cell) / 8);
+          old_cells.at(forward.discretization().mesh().cell_index(*cell) / 8);
         const auto              J     = jacobian(parent.vertices);
         const auto              J_inv = invert(J);
         std::array<Point<3>, 4> vertices;

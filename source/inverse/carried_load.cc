@@ -1,5 +1,7 @@
 // The reference contact solve of a load-carrying rest shape.
 #include <restshape/base/input_error.h>
+#include <restshape/contact/admissible_target.h>
+#include <restshape/contact/contact_report.h>
 #include <restshape/inverse/carried_load.h>
 
 namespace RestShape
@@ -14,15 +16,16 @@ namespace RestShape
                const double      share)
   {
     CarriedLoad result;
-    result.share          = share;
-    result.touching_nodes = contact.keep_target_contacts(target_shift);
+    result.share = share;
+    result.touching_nodes =
+      AdmissibleTarget(contact).keep_contacts(target_shift);
     contact.reset();
     if (result.touching_nodes == 0)
       {
         // Nothing can carry a load: the least-force rest shape.
-        contact.restore_contact();
+        AdmissibleTarget(contact).restore_contacts();
         result.converged = true;
-        result.forces    = forward.zero_vector();
+        result.forces    = forward.discretization().zero_vector();
         return result;
       }
     // Stress-free at the target: the rest shape is the target itself.
@@ -34,17 +37,18 @@ namespace RestShape
     if (stats.converged)
       {
         const VectorType &r    = forward.raw_residual();
-        result.reference_force = contact.total_force(r);
-        result.active_nodes    = contact.n_active();
-        result.forces          = contact.target_forces(r, target_shift);
+        result.reference_force = ContactReport(contact).total_force(r);
+        result.active_nodes    = ContactReport(contact).n_active();
+        result.forces = AdmissibleTarget(contact).forces(r, target_shift);
         result.forces *= share;
-        const MPI_Comm comm = forward.dof_handler().get_communicator();
-        for (const Node &node : forward.owned_nodes())
+        const MPI_Comm comm =
+          forward.discretization().dof_handler().get_communicator();
+        for (const Node &node : forward.discretization().owned_nodes())
           for (unsigned int k = 0; k < 3; ++k)
             result.stated_force[k] += result.forces[node.dofs[k]];
         result.stated_force = Utilities::MPI::sum(result.stated_force, comm);
       }
-    contact.restore_contact();
+    AdmissibleTarget(contact).restore_contacts();
     contact.reset();
     return result;
   }

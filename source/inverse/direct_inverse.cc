@@ -85,8 +85,9 @@ namespace RestShape
     product           = 0;
     if (norm == 0)
       return;
-    const double e = fd_step * forward.mesh().diameter() / norm;
-    trial          = w;
+    const double e =
+      fd_step * forward.discretization().mesh().diameter() / norm;
+    trial = w;
     trial.add(e, v);
     residual(trial, product);
     product -= r;
@@ -106,8 +107,8 @@ namespace RestShape
   {
     target_displacement = displacement;
     obstacle_force      = force;
-    const auto &fixed   = forward.base_constraints();
-    for (const auto i : forward.locally_owned_dofs())
+    const auto &fixed   = forward.discretization().base_constraints();
+    for (const auto i : forward.discretization().locally_owned_dofs())
       if (fixed.is_constrained(i))
         obstacle_force[i] = 0;
     obstacle_force.compress(VectorOperation::insert);
@@ -117,7 +118,7 @@ namespace RestShape
   DirectInverse::residual(const VectorType &w, VectorType &r)
   {
     forward.set_state(d, w, load);
-    const bool valid = forward.evaluate_residual();
+    const bool valid = forward.evaluate();
     r                = forward.condensed_residual();
     if (obstacle_force.size() > 0)
       r.add(fraction, obstacle_force);
@@ -129,10 +130,10 @@ namespace RestShape
   {
     result       = DirectInverseResult();
     d            = target_displacement.size() > 0 ? target_displacement :
-                                                    forward.zero_vector();
+                                                    forward.discretization().zero_vector();
     load         = scene_load;
     fraction     = 1;
-    VectorType r = forward.zero_vector();
+    VectorType r = forward.discretization().zero_vector();
     if (!residual(rest, r))
       {
         result.failure = "the initial rest shape has an inverted cell";
@@ -176,7 +177,7 @@ namespace RestShape
   bool
   DirectInverse::newton(VectorType &w, const double tolerance, const double s)
   {
-    VectorType r = forward.zero_vector();
+    VectorType r = forward.discretization().zero_vector();
     if (!residual(w, r))
       return false;
     // Full steps whose |R| lies above the line search's target are taken
@@ -244,7 +245,7 @@ namespace RestShape
                                   const VectorType &r,
                                   const double      eta)
   {
-    VectorType delta = forward.zero_vector(), minus_r = r;
+    VectorType delta = forward.discretization().zero_vector(), minus_r = r;
     minus_r *= -1;
     forward.set_state(d, w, load);
     forward.prepare_consistent_tangent();
@@ -253,7 +254,7 @@ namespace RestShape
     // for small strains, and R's sign makes the product with dR/dw near
     // identity): factorised, or an inner CG + AMG solve. If GMRES stops at
     // max_gmres_steps, the line search judges the best iterate so far.
-    VectorType                trial = forward.zero_vector();
+    VectorType                trial = forward.discretization().zero_vector();
     const FlexibleGmresResult gmres =
       FlexibleGmres(max_gmres_steps)
         .solve(
@@ -277,7 +278,7 @@ namespace RestShape
   {
     // Backtracking on |R|, never through an inverted rest cell.
     const double r_norm  = r.l2_norm();
-    VectorType   w_trial = w, r_trial = forward.zero_vector();
+    VectorType   w_trial = w, r_trial = forward.discretization().zero_vector();
     double       alpha = 1;
     for (unsigned int h = 0; h <= max_halvings; ++h, alpha /= 2)
       {

@@ -1,5 +1,8 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/units.h>
+#include <restshape/contact/admissible_target.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/inverse/inverse_problem.h>
 #include <restshape/inverse/load_path.h>
 #include <restshape/inverse/stopping_rules.h>
@@ -37,9 +40,9 @@ namespace RestShape
   std::pair<double, double>
   InverseProblem::target_errors() const
   {
-    VectorType e = forward.owned_copy(forward.displacement());
+    VectorType e = forward.discretization().owned_copy(forward.displacement());
     e -= target_shift;
-    return forward.nodal_norms(e);
+    return nodal_norms(forward.discretization(), e);
   }
 
   bool
@@ -48,7 +51,8 @@ namespace RestShape
     // An equilibrium with nodes beyond the obstacle (free since its solve
     // started with them there) does not meet the contact conditions: not
     // a rest shape, however small the error.
-    const unsigned int outside = contact != nullptr ? contact->n_outside() : 0;
+    const unsigned int outside =
+      contact != nullptr ? ContactReport(*contact).n_outside() : 0;
     if (outside > 0)
       {
         pcout << "  " << outside
@@ -63,10 +67,10 @@ namespace RestShape
   void
   InverseProblem::set_admissible_target(InverseResult &result)
   {
-    target_shift = forward.zero_vector();
+    target_shift = forward.discretization().zero_vector();
     if (contact == nullptr)
       return;
-    target_shift = contact->admissible_target_shift();
+    target_shift = AdmissibleTarget(*contact).shift();
     set_unreachable(result);
     if (result.unreachable_nodes > 0)
       pcout << "Target: " << result.unreachable_nodes
@@ -83,7 +87,8 @@ namespace RestShape
   void
   InverseProblem::set_unreachable(InverseResult &result) const
   {
-    const auto unreachable   = forward.nodal_norms_above(target_shift, 0.);
+    const auto unreachable =
+      nodal_norms_above(forward.discretization(), target_shift, 0.);
     result.unreachable_nodes = unreachable.n;
     result.unreachable_max   = unreachable.max;
     result.unreachable_mean  = unreachable.mean;
@@ -94,9 +99,10 @@ namespace RestShape
   {
     unsigned int n_inverted = 0;
     if (target_shift.linfty_norm() == 0 ||
-        forward.rest_shape_is_valid(target_shift, n_inverted))
+        rest_shape_is_valid(forward.discretization(), target_shift, n_inverted))
       return false;
-    const TargetRelaxation       relaxation(forward, contact->surface());
+    const TargetRelaxation       relaxation(forward.discretization(),
+                                      contact->surface());
     const TargetRelaxationResult r = relaxation.relax(target_shift);
     result.relaxation              = r;
     pcout << "Target: the projection onto the obstacle inverts "
@@ -130,23 +136,26 @@ namespace RestShape
                          const bool             anderson)
   {
     const auto errors = target_errors();
-    const auto image  = forward.nodal_norms(forward.displacement());
-    history.push_back({iteration,
-                       errors.first,
-                       errors.second,
-                       image.first,
-                       image.second,
-                       stats.newton_iterations,
-                       contact != nullptr ? contact->n_active() : 0,
-                       wall_timer.wall_time(),
-                       anderson});
+    const auto image =
+      nodal_norms(forward.discretization(), forward.displacement());
+    history.push_back(
+      {iteration,
+       errors.first,
+       errors.second,
+       image.first,
+       image.second,
+       stats.newton_iterations,
+       contact != nullptr ? ContactReport(*contact).n_active() : 0,
+       wall_timer.wall_time(),
+       anderson});
     std::string contact_text;
     if (contact != nullptr)
       {
         contact_text = ", " +
                        std::to_string(history.back().active_contact_nodes) +
                        " contact nodes";
-        const auto [n_fixed, distance] = contact->fixed_plane_nodes();
+        const auto [n_fixed, distance] =
+          ContactReport(*contact).fixed_plane_nodes();
         if (n_fixed > 0)
           contact_text += ", " + std::to_string(n_fixed) +
                           " on fixed planes, up to " + mm_text(distance) +
@@ -168,15 +177,16 @@ namespace RestShape
     last_step = step;
     TimerOutput::Scope scope(timer, "Output");
     // Nodal vectors: the error X_target - X_eq = -d, and the three shapes.
-    VectorType error = target_shift, target = forward.zero_vector();
-    error -= forward.owned_copy(forward.displacement());
-    for (const Node &node : forward.owned_nodes())
+    VectorType error  = target_shift,
+               target = forward.discretization().zero_vector();
+    error -= forward.discretization().owned_copy(forward.displacement());
+    for (const Node &node : forward.discretization().owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
         target[node.dofs[c]] = node.position[c];
     target.compress(VectorOperation::insert);
     VectorType rest = target, equilibrium = target;
-    rest += forward.owned_copy(forward.rest_displacement());
-    equilibrium += forward.owned_copy(forward.displacement());
+    rest += forward.discretization().owned_copy(forward.rest_displacement());
+    equilibrium += forward.discretization().owned_copy(forward.displacement());
 
     const std::string       unit   = output->length_unit_name;
     const double            scale  = output->length_scale();
@@ -192,7 +202,8 @@ namespace RestShape
     VectorType contact_fields;
     if (contact != nullptr)
       {
-        contact_fields = contact->nodal_fields(forward.raw_residual(), scale);
+        contact_fields =
+          ContactReport(*contact).nodal_fields(forward.raw_residual(), scale);
         fields.push_back(
           {&contact_fields,
            {"contact_active", "contact_gap_" + unit, "contact_pressure_Pa"},
@@ -214,11 +225,12 @@ namespace RestShape
   InverseResult
   InverseProblem::finish(InverseResult &result, const std::string &reason) const
   {
-    result.reason           = reason;
-    const auto e            = target_errors();
-    result.mean_error       = e.first;
-    result.max_error        = e.second;
-    const auto image        = forward.nodal_norms(forward.displacement());
+    result.reason     = reason;
+    const auto e      = target_errors();
+    result.mean_error = e.first;
+    result.max_error  = e.second;
+    const auto image =
+      nodal_norms(forward.discretization(), forward.displacement());
     result.mean_image_error = image.first;
     result.max_image_error  = image.second;
     if (!reason.empty())
@@ -294,7 +306,7 @@ namespace RestShape
       pcout << "  Direct inverse: at the image, without contact (the fixed "
                "point then aims at the admissible target)"
             << std::endl;
-    rest = forward.owned_copy(initial_rest);
+    rest = forward.discretization().owned_copy(initial_rest);
     // Aiming at the admissible target, start stress-free there.
     if (carries && rest.linfty_norm() == 0)
       rest = target_shift;
@@ -321,11 +333,11 @@ namespace RestShape
   std::string
   InverseProblem::directions_only_contact_holds() const
   {
-    if (contact == nullptr ||
-        forward.scene_parameters().boundary.support_stiffness > 0)
+    if (contact == nullptr || forward.loads().has_support())
       return "";
-    const std::array<bool, 3> held = forward.fixed_components();
-    std::string               unheld;
+    const std::array<bool, 3> held =
+      forward.discretization().fixed_components();
+    std::string unheld;
     for (unsigned int c = 0; c < 3; ++c)
       if (!held[c])
         unheld += std::string(unheld.empty() ? "" : ", ") + "xyz"[c];
@@ -354,7 +366,7 @@ namespace RestShape
     // Never a rest shape with an inverted or degenerate cell.
     unsigned int n_bad = 0;
     std::string  where;
-    if (forward.rest_shape_is_valid(candidate, n_bad))
+    if (rest_shape_is_valid(forward.discretization(), candidate, n_bad))
       return "";
     if (accelerated)
       {
@@ -366,8 +378,8 @@ namespace RestShape
         accelerated = false;
       }
     constexpr double shortest = 1. / 64;
-    for (double beta = 0.5;
-         !forward.rest_shape_is_valid(candidate, n_bad, &where);
+    for (double beta = 0.5; !rest_shape_is_valid(
+           forward.discretization(), candidate, n_bad, &where);
          beta /= 2)
       {
         if (beta < shortest)
@@ -409,7 +421,7 @@ namespace RestShape
           contact->set_one_sided(false);
       }
     } one_sided(contact);
-    const LoadState load = forward.scene_load();
+    const LoadState load = forward.loads().scene_load();
     set_admissible_target(result);
     // An equilibrium x at the admissible target has det(dx/dX_mesh) =
     // det F det(dX_rest/dX_mesh) > 0 for any valid rest shape: a target
@@ -468,9 +480,10 @@ namespace RestShape
           {
             rest = &direct_rest;
             // Newton from the target (admissible, where it carries).
-            target_guess =
-              result.carried.share > 0 ? target_shift : forward.zero_vector();
-            guess = &target_guess;
+            target_guess = result.carried.share > 0 ?
+                             target_shift :
+                             forward.discretization().zero_vector();
+            guess        = &target_guess;
           }
         else if (result.carried.share > 0)
           return finish(result,
@@ -504,7 +517,7 @@ namespace RestShape
     const bool accelerate =
       parameters.acceleration == InverseParameters::Acceleration::anderson;
     AndersonAccelerator anderson(parameters.anderson_depth);
-    VectorType          w = start, d = forward.zero_vector();
+    VectorType          w = start, d = forward.discretization().zero_vector();
     d                = forward.displacement(); // owned layout
     bool force_plain = false;
     while (result.iterations < parameters.max_iterations)

@@ -4,8 +4,10 @@
 #include <deal.II/lac/vector.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/contact/admissible_target.h>
 #include <restshape/contact/contact.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/inverse/load_path.h>
 
 #include <cmath>
@@ -99,7 +101,7 @@ namespace RestShape
     {
       std::map<Label, std::array<bool, 3>> fixed;
       for (const FixedLabel &f :
-           forward.scene_parameters().boundary.fixed_labels)
+           forward.scene_parameters().discretization.fixed_labels)
         fixed[f.label] = f.components;
       const auto is_fixed = [&](const Label label, const unsigned int c) {
         const auto it = fixed.find(label);
@@ -107,7 +109,8 @@ namespace RestShape
       };
       std::array<double, 3> area{{0, 0, 0}};
       std::array<bool, 3>   any{{false, false, false}};
-      for (const auto &cell : forward.dof_handler().active_cell_iterators())
+      for (const auto &cell :
+           forward.discretization().dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           for (unsigned int c = 0; c < 3; ++c)
             {
@@ -121,8 +124,10 @@ namespace RestShape
                     is_fixed(cell->neighbor(f)->material_id(), c))
                   area[c] += cell->face(f)->measure();
             }
-      const MPI_Comm comm =
-        forward.dof_handler().get_triangulation().get_communicator();
+      const MPI_Comm comm = forward.discretization()
+                              .dof_handler()
+                              .get_triangulation()
+                              .get_communicator();
       for (unsigned int c = 0; c < 3; ++c)
         {
           area[c] = Utilities::MPI::sum(area[c], comm);
@@ -138,11 +143,11 @@ namespace RestShape
     {
       std::set<Label> held;
       for (const FixedLabel &f :
-           forward.scene_parameters().boundary.fixed_labels)
+           forward.scene_parameters().discretization.fixed_labels)
         if (f.components[0] && f.components[1] && f.components[2])
           held.insert(f.label);
       double E = 0;
-      for (const Label label : forward.mesh().labels())
+      for (const Label label : forward.discretization().mesh().labels())
         if (held.count(label) == 0)
           E = std::max(E, forward.materials().youngs_modulus(label));
       return E;
@@ -155,13 +160,13 @@ namespace RestShape
                    const LoadState      &load)
   {
     LoadPath path;
-    if (forward.scene_parameters().boundary.support_stiffness > 0)
+    if (forward.loads().has_support())
       return path;
     path.assessed = true;
-    path.load     = forward.total_external_force(load);
+    path.load     = total_external_force(forward, load);
     std::vector<Tensor<1, 3>> normals;
     if (contact != nullptr)
-      normals = contact->target_normals();
+      normals = AdmissibleTarget(*contact).normals();
     path.contact_nodes = normals.size();
     // The obstacle pushes along its normals: it balances -F where it can.
     path.through_supports =

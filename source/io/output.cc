@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <restshape/base/atomic_file.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/io/output.h>
 #include <restshape/io/vtu_cell_data.h>
 
@@ -57,16 +58,19 @@ namespace RestShape
     cell_arrays(const ForwardProblem         &problem,
                 const std::vector<CellField> &extra)
     {
-      const MPI_Comm comm =
-        problem.dof_handler().get_triangulation().get_communicator();
+      const MPI_Comm comm = problem.discretization()
+                              .dof_handler()
+                              .get_triangulation()
+                              .get_communicator();
       std::vector<VtuCellArray> arrays = {{"label", true, {}},
                                           {"von_mises_Pa", false, {}}};
       if (Utilities::MPI::n_mpi_processes(comm) > 1)
         arrays.push_back({"subdomain", true, {}});
       for (const CellField &f : extra)
         arrays.push_back({f.name, false, {}});
-      const Vector<float> stress = problem.von_mises_stress();
-      for (const auto &cell : problem.dof_handler().active_cell_iterators())
+      const Vector<float> stress = von_mises_stress(problem);
+      for (const auto &cell :
+           problem.discretization().dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const unsigned int i = cell->active_cell_index();
@@ -212,15 +216,15 @@ namespace RestShape
                              const std::vector<CellField>  &extra_cell,
                              const std::string             &name)
   {
-    const DoFHandler<3> &dof_handler = problem.dof_handler();
-    const IndexSet      &owned       = problem.locally_owned_dofs();
-    const IndexSet      &relevant    = problem.locally_relevant_dofs();
-    const double         to_unit     = 1. / length_unit;
+    const DoFHandler<3> &dof_handler = problem.discretization().dof_handler();
+    const IndexSet      &owned = problem.discretization().locally_owned_dofs();
+    const IndexSet &relevant = problem.discretization().locally_relevant_dofs();
+    const double    to_unit  = 1. / length_unit;
 
     // Deformed geometry X + d, in the output length unit, as the Euler
     // vector of a MappingFEField.
     LinearAlgebra::distributed::Vector<double> euler(owned, relevant, comm);
-    for (const Node &node : problem.owned_nodes())
+    for (const Node &node : problem.discretization().owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
         euler[node.dofs[c]] =
           (node.position[c] + problem.displacement()[node.dofs[c]]) * to_unit;
@@ -231,7 +235,8 @@ namespace RestShape
     // Displacement from the rest shape: d - w.
     VectorType displacement(owned, comm);
     displacement = problem.displacement();
-    displacement -= problem.owned_copy(problem.rest_displacement());
+    displacement -=
+      problem.discretization().owned_copy(problem.rest_displacement());
     displacement *= to_unit;
     VectorType displacement_ghost(owned, relevant, comm);
     displacement_ghost = displacement;
@@ -273,7 +278,7 @@ namespace RestShape
           }
       }
 
-    const unsigned int degree = problem.fe().degree;
+    const unsigned int degree = problem.discretization().fe().degree;
     data_out.build_patches(deformed, degree, DataOut<3>::curved_inner_cells);
     DataOutBase::VtkFlags flags;
     flags.time = time;
@@ -281,7 +286,8 @@ namespace RestShape
     // quadratic VTK tetrahedra (10 nodes) without this flag; with it, it
     // writes empty offsets and types, which no reader opens.
     flags.write_higher_order_cells =
-      degree > 1 && problem.fe().reference_cell().is_hyper_cube();
+      degree > 1 &&
+      problem.discretization().fe().reference_cell().is_hyper_cube();
     data_out.set_flags(flags);
     const std::vector<VtuCellArray> cell_data =
       cell_arrays(problem, extra_cell);

@@ -1,3 +1,5 @@
+#include <restshape/base/input_error.h>
+#include <restshape/base/parameter_parsing.h>
 #include <restshape/fem/element_limits.h>
 #include <restshape/loads/elastic_support.h>
 #include <restshape/loads/surface_load.h>
@@ -8,10 +10,63 @@ namespace RestShape
 {
   using namespace dealii;
 
-  ElasticSupport::ElasticSupport(const LoadContext &context)
-    : k(context.parameters.boundary.support_stiffness)
-    , labels(
-        context.labels_or_unfixed(context.parameters.boundary.support_labels))
+  LoadTermInfo
+  ElasticSupport::info()
+  {
+    LoadTermInfo i;
+    i.name        = "Elastic support";
+    i.description = "Tethers on the outer faces of Boundary conditions/"
+                    "Elastic support labels (the arachnoid trabeculae "
+                    "between brain and skull): a traction -k (d - w) per "
+                    "unit area of the rest shape's faces, stress-free in "
+                    "the rest shape. A support, not a load: its resultant "
+                    "is a reaction.";
+    i.declare     = [](ParameterHandler &prm) {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Elastic support stiffness",
+                        "0",
+                        Patterns::Double(),
+                        "Stiffness k in N/m^3 (Pa of traction per m of "
+                            "displacement) of an elastic foundation on the outer "
+                            "faces: traction -k u per unit area of the rest "
+                            "shape's faces, u the displacement from the rest "
+                            "shape, in every direction. It stands for tethers "
+                            "such as the arachnoid trabeculae between brain and "
+                            "skull, which are stress-free in the rest shape. 1e4 "
+                            "N/m^3 (10 Pa per mm) holds a 1.5 kPa brain against "
+                            "rotating freely in a frictionless skull. 0: none.");
+      prm.declare_entry("Elastic support labels",
+                        "",
+                        Patterns::Anything(),
+                        "The elastic support acts on the outer faces of "
+                            "cells with these labels; empty: all labels that "
+                            "are not fully fixed.");
+      prm.leave_subsection();
+    };
+    i.parse = [](ParameterHandler &prm, double) {
+      Settings s;
+      prm.enter_subsection("Boundary conditions");
+      s.stiffness = prm.get_double("Elastic support stiffness");
+      if (!(s.stiffness >= 0))
+        throw InputError("",
+                         "Boundary conditions/Elastic support stiffness",
+                         "'" + prm.get("Elastic support stiffness") +
+                           "': expected a stiffness >= 0 in N/m^3");
+      s.labels = parse_label_set(prm.get("Elastic support labels"),
+                                 "Boundary conditions/Elastic support labels");
+      prm.leave_subsection();
+      return LoadTermFactory([s](const LoadContext &context) {
+        return std::make_unique<ElasticSupport>(s, context);
+      });
+    };
+    i.labels = {{"Boundary conditions", "Elastic support labels", false}};
+    return i;
+  }
+
+  ElasticSupport::ElasticSupport(const Settings    &settings,
+                                 const LoadContext &context)
+    : k(settings.stiffness)
+    , labels(context.labels_or_unfixed(settings.labels))
     , context(context)
   {}
 

@@ -1,75 +1,87 @@
+#include <restshape/loads/body_force.h>
+#include <restshape/loads/elastic_support.h>
+#include <restshape/loads/environment_parameters.h>
 #include <restshape/loads/load_registry.h>
+#include <restshape/loads/surface_pressure.h>
 #include <restshape/loads/surface_traction.h>
-
-#include <functional>
 
 namespace RestShape
 {
-  namespace
+  const std::vector<LoadTermInfo> &
+  load_term_registry()
   {
-    /// What the registry knows of a load term.
-    struct Registration
-    {
-      std::function<void(dealii::ParameterHandler &)>            declare;
-      std::function<LoadTermFactory(dealii::ParameterHandler &)> parse;
-      std::vector<LabelListEntry>                                labels;
-    };
-
-    /// A term class with static declare_parameters(prm),
-    /// parse_parameters(prm) (an empty factory where the scene does not
-    /// enable it) and label_entries().
-    template <typename Term>
-    Registration
-    registration()
-    {
-      return {&Term::declare_parameters,
-              &Term::parse_parameters,
-              Term::label_entries()};
-    }
-
-    /// Every registered term. A new load is one class and one line here.
-    const std::vector<Registration> &
-    registry()
-    {
-      static const std::vector<Registration> terms = {
-        registration<SurfaceTraction>()};
-      return terms;
-    }
-  } // namespace
+    static const std::vector<LoadTermInfo> terms = {BodyForce::info(),
+                                                    SurfacePressure::info(),
+                                                    ElasticSupport::info(),
+                                                    SurfaceTraction::info()};
+    return terms;
+  }
 
   void
   declare_load_term_parameters(dealii::ParameterHandler &prm)
   {
-    for (const Registration &r : registry())
-      r.declare(prm);
+    EnvironmentParameters::declare_parameters(prm);
+    for (const LoadTermInfo &term : load_term_registry())
+      term.declare(prm);
   }
 
   std::vector<LabelListEntry>
   load_term_label_entries()
   {
     std::vector<LabelListEntry> entries;
-    for (const Registration &r : registry())
-      entries.insert(entries.end(), r.labels.begin(), r.labels.end());
+    for (const LoadTermInfo &term : load_term_registry())
+      entries.insert(entries.end(), term.labels.begin(), term.labels.end());
     return entries;
   }
 
   std::vector<LoadTermFactory>
-  parse_load_terms(dealii::ParameterHandler &prm)
+  parse_load_terms(dealii::ParameterHandler &prm, const double length_unit)
   {
     std::vector<LoadTermFactory> factories;
-    for (const Registration &r : registry())
-      if (LoadTermFactory make = r.parse(prm))
+    for (const LoadTermInfo &term : load_term_registry())
+      if (LoadTermFactory make = term.parse(prm, length_unit))
         factories.push_back(std::move(make));
     return factories;
   }
 
-  std::vector<std::unique_ptr<LoadTerm>>
-  create_load_terms(const std::vector<LoadTermFactory> &factories,
-                    const LoadContext                  &context)
+  std::vector<ScenarioEntry>
+  load_scenario_entries()
   {
-    std::vector<std::unique_ptr<LoadTerm>> terms;
-    for (const LoadTermFactory &make : factories)
-      terms.push_back(make(context));
-    return terms;
+    std::vector<ScenarioEntry> entries;
+    for (const LoadTermInfo &term : load_term_registry())
+      entries.insert(entries.end(),
+                     term.scenario_entries.begin(),
+                     term.scenario_entries.end());
+    return entries;
+  }
+
+  std::vector<std::string>
+  load_names()
+  {
+    std::vector<std::string> names;
+    for (const LoadTermInfo &term : load_term_registry())
+      names.insert(names.end(), term.loads.begin(), term.loads.end());
+    return names;
+  }
+
+  std::string
+  load_terms_reference()
+  {
+    std::string text;
+    for (const LoadTermInfo &term : load_term_registry())
+      {
+        text += "### " + term.name + "\n\n" + term.description + "\n";
+        if (!term.loads.empty())
+          {
+            text += "\nIts loads (Scenario/Load scale):";
+            for (const std::string &name : term.loads)
+              text += " `" + name + "`";
+            text += ".\n";
+          }
+        for (const ScenarioEntry &e : term.scenario_entries)
+          text += "\n- Scenario entry `" + e.name + "`: " + e.help + "\n";
+        text += "\n";
+      }
+    return text;
   }
 } // namespace RestShape

@@ -12,15 +12,8 @@ namespace RestShape
     std::set<Label> result = given;
     if (result.empty())
       for (const Label label : mesh.labels())
-        {
-          bool fully_fixed = false;
-          for (const auto &f : parameters.boundary.fixed_labels)
-            if (f.label == label && f.components[0] && f.components[1] &&
-                f.components[2])
-              fully_fixed = true;
-          if (!fully_fixed)
-            result.insert(label);
-        }
+        if (!fully_fixed(label))
+          result.insert(label);
     return result;
   }
 

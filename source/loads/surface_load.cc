@@ -8,11 +8,58 @@ namespace RestShape
 {
   using namespace dealii;
 
-  SurfaceLoad::SurfaceLoad(const LoadParameters &loads, const Point<3> &level)
+  const std::string SurfaceLoad::pressure_name = "Surface pressure",
+                    SurfaceLoad::fluid_name    = "Fluid pressure",
+                    SurfaceLoad::opening_pressure_name =
+                      "Surface pressure off the opening",
+                    SurfaceLoad::opening_fluid_name =
+                      "Fluid pressure off the opening";
+
+  SurfaceLoad::SurfaceLoad(const bool      follower,
+                           const double    fluid_density,
+                           const Point<3> &level)
     : level(level)
-    , is_follower(loads.follower)
-    , fluid_density(loads.hydrostatic ? loads.fluid_density : 0.)
+    , is_follower(follower)
+    , fluid_density(fluid_density)
   {}
+
+  namespace
+  {
+    std::vector<FluidColumn>
+    fluid_of(const LoadState::Columns &columns)
+    {
+      std::vector<FluidColumn> fluid;
+      for (const LoadColumn &c : columns)
+        fluid.push_back(
+          {column_vector(c, 0), Point<3>(column_vector(c, 3)), c.weight});
+      return fluid;
+    }
+  } // namespace
+
+  PressureNames::PressureNames()
+    : pressure(SurfaceLoad::pressure_name)
+    , fluid(SurfaceLoad::fluid_name)
+    , opening_pressure(SurfaceLoad::opening_pressure_name)
+    , opening_fluid(SurfaceLoad::opening_fluid_name)
+  {}
+
+  PressureNames::PressureNames(const std::string &pressure)
+    : pressure(pressure)
+  {}
+
+  PressureField
+  SurfaceLoad::field(const LoadState &load, const PressureNames &names)
+  {
+    PressureField f;
+    f.pressure = load.weighted(names.pressure);
+    if (!names.fluid.empty())
+      f.fluid = fluid_of(load.columns(names.fluid));
+    if (!names.opening_pressure.empty())
+      f.opening_pressure = load.weighted(names.opening_pressure);
+    if (!names.opening_fluid.empty())
+      f.opening_fluid = fluid_of(load.columns(names.opening_fluid));
+    return f;
+  }
 
   namespace
   {
@@ -25,7 +72,7 @@ namespace RestShape
 
     /// The uniform pressure a face carries.
     double
-    uniform(const LoadState &load, const SurfaceLoad::Face face)
+    uniform(const PressureField &load, const SurfaceLoad::Face face)
     {
       return face == SurfaceLoad::Face::covered ?
                load.pressure :
@@ -36,7 +83,7 @@ namespace RestShape
     /// opening with their weight negated on its faces).
     template <typename Function>
     void
-    for_each_column(const LoadState        &load,
+    for_each_column(const PressureField    &load,
                     const SurfaceLoad::Face face,
                     const Function         &f)
     {
@@ -49,7 +96,7 @@ namespace RestShape
   } // namespace
 
   bool
-  SurfaceLoad::acts(const LoadState &load) const
+  SurfaceLoad::acts(const PressureField &load) const
   {
     const auto wets = [](const std::vector<FluidColumn> &columns) {
       for (const FluidColumn &c : columns)
@@ -63,9 +110,9 @@ namespace RestShape
   }
 
   double
-  SurfaceLoad::pressure(const LoadState &load,
-                        const Point<3>  &x,
-                        const Face       face) const
+  SurfaceLoad::pressure(const PressureField &load,
+                        const Point<3>      &x,
+                        const Face           face) const
   {
     double p = uniform(load, face);
     for_each_column(load, face, [&](const FluidColumn &c, const double w) {
@@ -75,9 +122,9 @@ namespace RestShape
   }
 
   Tensor<1, 3>
-  SurfaceLoad::pressure_gradient(const LoadState &load,
-                                 const Point<3>  &x,
-                                 const Face       face) const
+  SurfaceLoad::pressure_gradient(const PressureField &load,
+                                 const Point<3>      &x,
+                                 const Face           face) const
   {
     Tensor<1, 3> g;
     for_each_column(load, face, [&](const FluidColumn &c, const double w) {
@@ -88,9 +135,9 @@ namespace RestShape
   }
 
   Tensor<1, 3>
-  SurfaceLoad::potential_flux(const LoadState &load,
-                              const Point<3>  &x,
-                              const Face       face) const
+  SurfaceLoad::potential_flux(const PressureField &load,
+                              const Point<3>      &x,
+                              const Face           face) const
   {
     Tensor<1, 3> q = uniform(load, face) / 3. * (x - level);
     for_each_column(load, face, [&](const FluidColumn &c, const double w) {
@@ -102,12 +149,15 @@ namespace RestShape
     return q;
   }
 
-  std::vector<FluidColumn>
-  SurfaceLoad::scene_fluid(const Tensor<1, 3> &a) const
+  LoadState::Columns
+  SurfaceLoad::fluid_columns(const Tensor<1, 3> &a, const Point<3> &at) const
   {
     if (fluid_density == 0 || a.norm_square() == 0)
       return {};
-    return {{a, level, 1.}};
+    std::vector<double> p = vector_parameters(a);
+    for (unsigned int d = 0; d < 3; ++d)
+      p.push_back(at[d]);
+    return {{p, 1.}};
   }
 
   Tensor<1, 3>

@@ -10,60 +10,80 @@ namespace RestShape
   namespace
   {
     const std::string section = "Surface traction";
+  } // namespace
+
+  namespace
+  {
+    void
+    declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection(section);
+      prm.declare_entry("Traction",
+                        "0, 0, 0",
+                        Patterns::Anything(),
+                        "A dead traction in Pa (force per unit area of the "
+                        "mesh's faces, x, y, z in the mesh's axes) on the "
+                        "boundary faces of Labels whose centres lie in Region, "
+                        "e.g. a retractor's spatula. It scales with the load "
+                        "like gravity. Zero: none.");
+      prm.declare_entry("Labels",
+                        "",
+                        Patterns::Anything(),
+                        "Labels whose boundary faces carry the traction; "
+                        "empty: every label not fully fixed.");
+      prm.declare_entry("Region",
+                        "",
+                        Patterns::Anything(),
+                        "Where the loaded faces' centres lie, in the mesh's "
+                        "length unit: 'sphere: x, y, z, r' or 'cylinder: x, y, "
+                        "z, ax, ay, az, r'; empty: every face of Labels.");
+      prm.leave_subsection();
+    }
+
+    LoadTermFactory
+    parse(ParameterHandler &prm, double)
+    {
+      SurfaceTraction::Settings s;
+      prm.enter_subsection(section);
+      s.traction = parse_vector(prm.get("Traction"), section + "/Traction");
+      s.labels   = parse_label_set(prm.get("Labels"), section + "/Labels");
+      s.region   = parse_region(prm.get("Region"), section + "/Region");
+      prm.leave_subsection();
+      if (s.region.shape == Region::Shape::surface)
+        throw InputError("",
+                         section + "/Region",
+                         "a surface file cannot bound the loaded patch; "
+                         "expected 'sphere: x, y, z, r' or 'cylinder: x, y, z, "
+                         "ax, ay, az, r'");
+      if (s.traction.norm() == 0)
+        return {};
+      return [s](const LoadContext &context) {
+        return std::make_unique<SurfaceTraction>(s, context);
+      };
+    }
+  } // namespace
+
+  LoadTermInfo
+  SurfaceTraction::info()
+  {
+    LoadTermInfo i;
+    i.name        = section;
+    i.description = "A dead traction on a patch of the surface (a "
+                    "retractor's spatula, a hand pressing on the tissue): "
+                    "subsection Surface traction, on the boundary faces of "
+                    "its labels whose centres lie in its region. Enabled by "
+                    "a traction other than zero.";
+    i.loads       = {section};
+    i.declare     = declare;
+    i.parse       = parse;
+    i.labels      = {{section, "Labels", false}};
+    return i;
   }
 
   void
-  SurfaceTraction::declare_parameters(ParameterHandler &prm)
+  SurfaceTraction::scene_load(LoadState &load) const
   {
-    prm.enter_subsection(section);
-    prm.declare_entry("Traction",
-                      "0, 0, 0",
-                      Patterns::Anything(),
-                      "A dead traction in Pa (force per unit area of the "
-                      "mesh's faces, x, y, z in the mesh's axes) on the "
-                      "boundary faces of Labels whose centres lie in Region, "
-                      "e.g. a retractor's spatula. It scales with the load "
-                      "like gravity. Zero: none.");
-    prm.declare_entry("Labels",
-                      "",
-                      Patterns::Anything(),
-                      "Labels whose boundary faces carry the traction; "
-                      "empty: every label not fully fixed.");
-    prm.declare_entry("Region",
-                      "",
-                      Patterns::Anything(),
-                      "Where the loaded faces' centres lie, in the mesh's "
-                      "length unit: 'sphere: x, y, z, r' or 'cylinder: x, y, "
-                      "z, ax, ay, az, r'; empty: every face of Labels.");
-    prm.leave_subsection();
-  }
-
-  LoadTermFactory
-  SurfaceTraction::parse_parameters(ParameterHandler &prm)
-  {
-    Settings s;
-    prm.enter_subsection(section);
-    s.traction = parse_vector(prm.get("Traction"), section + "/Traction");
-    s.labels   = parse_label_set(prm.get("Labels"), section + "/Labels");
-    s.region   = parse_region(prm.get("Region"), section + "/Region");
-    prm.leave_subsection();
-    if (s.region.shape == Region::Shape::surface)
-      throw InputError("",
-                       section + "/Region",
-                       "a surface file cannot bound the loaded patch; "
-                       "expected 'sphere: x, y, z, r' or 'cylinder: x, y, z, "
-                       "ax, ay, az, r'");
-    if (s.traction.norm() == 0)
-      return {};
-    return [s](const LoadContext &context) {
-      return std::make_unique<SurfaceTraction>(s, context);
-    };
-  }
-
-  std::vector<LabelListEntry>
-  SurfaceTraction::label_entries()
-  {
-    return {{section, "Labels", false}};
+    load.add(section, {});
   }
 
   SurfaceTraction::SurfaceTraction(const Settings    &settings,
@@ -106,10 +126,11 @@ namespace RestShape
   void
   SurfaceTraction::assemble_faces(const LoadCell &c) const
   {
-    if (c.load.terms == 0)
+    const double weight = c.load.weight(section);
+    if (weight == 0)
       return;
     const FESystem<3> &fe = context.fe;
-    const Tensor<1, 3> t  = c.load.terms * traction;
+    const Tensor<1, 3> t  = weight * traction;
     for (const unsigned int f : c.cell->face_indices())
       if (loaded(c.cell, f))
         {
@@ -132,6 +153,6 @@ namespace RestShape
                                    const VectorType &) const
   {
     // A dead traction on the mesh's faces: its resultant is fixed.
-    return load.terms * area * traction;
+    return load.weight(section) * area * traction;
   }
 } // namespace RestShape

@@ -8,6 +8,19 @@ namespace RestShape
 {
   using namespace dealii;
 
+  LawInfo
+  CorotationalLaw::info()
+  {
+    LawInfo i;
+    i.name = "corotational";
+    i.description =
+      "linear elasticity in the rotated frame of each point (stiffness "
+      "constant, fast; cells can collapse under compressive strains of "
+      "order one)";
+    i.make = law_factory<CorotationalLaw>();
+    return i;
+  }
+
   Tensor2
   skew_matrix(const Tensor<1, 3> &w)
   {

@@ -13,33 +13,13 @@ namespace RestShape
 {
   namespace
   {
-    using Factory =
-      std::function<std::unique_ptr<MaterialLaw>(const LawParameters &)>;
-
-    template <typename Law>
-    Factory
-    factory()
-    {
-      return [](const LawParameters &p) { return std::make_unique<Law>(p); };
-    }
-
-    /// What the registry knows of a law: its name (as Materials/Material
-    /// law takes it), how to make it, and its own parameters.
-    struct Registration
-    {
-      std::string               name;
-      Factory                   make;
-      std::vector<LawParameter> parameters = {};
-    };
-
     /// Every law. A new law is one class and one line here.
-    const std::vector<Registration> &
+    const std::vector<LawInfo> &
     registry()
     {
-      static const std::vector<Registration> laws = {
-        {"corotational", factory<CorotationalLaw>()},
-        {"neo-Hookean", factory<NeoHookeanLaw>()},
-        {"Ogden", factory<OgdenLaw>(), OgdenLaw::parameters()}};
+      static const std::vector<LawInfo> laws = {CorotationalLaw::info(),
+                                                NeoHookeanLaw::info(),
+                                                OgdenLaw::info()};
       return laws;
     }
 
@@ -53,11 +33,20 @@ namespace RestShape
     }
   } // namespace
 
+  std::string
+  material_law_help()
+  {
+    std::string text;
+    for (const LawInfo &law : registry())
+      text += (text.empty() ? "" : "; ") + law.name + ": " + law.description;
+    return text;
+  }
+
   std::vector<std::string>
   material_law_names()
   {
     std::vector<std::string> names;
-    for (const Registration &law : registry())
+    for (const LawInfo &law : registry())
       names.push_back(law.name);
     return names;
   }
@@ -71,7 +60,7 @@ namespace RestShape
       if (laws[i].name == trimmed)
         return i;
     std::string known;
-    for (const Registration &law : laws)
+    for (const LawInfo &law : laws)
       known += (known.empty() ? "" : ", ") + law.name;
     throw InputError("",
                      parameter,
@@ -94,7 +83,7 @@ namespace RestShape
   declare_material_law_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
-    for (const Registration &law : registry())
+    for (const LawInfo &law : registry())
       for (const LawParameter &p : law.parameters)
         prm.declare_entry(p.name,
                           p.default_value,
@@ -107,7 +96,7 @@ namespace RestShape
   material_law_label_entries()
   {
     std::vector<LabelListEntry> entries;
-    for (const Registration &law : registry())
+    for (const LawInfo &law : registry())
       for (const LawParameter &p : law.parameters)
         entries.push_back({"Materials", p.name, true});
     return entries;
@@ -118,12 +107,12 @@ namespace RestShape
                                 MaterialParameters       &materials)
   {
     prm.enter_subsection("Materials");
-    for (const Registration &law : registry())
+    for (const LawInfo &law : registry())
       for (const LawParameter &p : law.parameters)
         materials.law_values[p.name] =
           LabelValues::parse(prm.get(p.name), "Materials/" + p.name);
     prm.leave_subsection();
-    for (const Registration &law : registry())
+    for (const LawInfo &law : registry())
       for (const LawParameter &p : law.parameters)
         {
           const LabelValues &values = materials.law_values[p.name];

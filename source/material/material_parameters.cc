@@ -4,6 +4,7 @@
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_parsing.h>
+#include <restshape/material/law_registry.h>
 #include <restshape/material/material_parameters.h>
 
 #include <cmath>
@@ -45,17 +46,10 @@ namespace RestShape
       "corotational",
       Patterns::Anything(),
       "The hyperelastic law of the tissue: one name for all labels or a "
-      "'label:name' list (ranges and '*' as for Young's modulus). "
-      "corotational: linear elasticity in the rotated frame of each point "
-      "(stiffness constant, fast; cells can collapse under compressive "
-      "strains of order one); neo-Hookean: compressible neo-Hookean, "
-      "W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 (its energy grows "
-      "without bound as a cell collapses: for strains of order one); "
-      "Ogden: compressible one-term Ogden, W = 2 mu/alpha^2 (sum of the "
-      "principal stretches to the power alpha - 3 - alpha ln J) + lambda/2 "
-      "(ln J)^2, with alpha from Ogden alpha (the brain's law: Budday et al. "
-      "2017). All take mu and lambda from Young's modulus and Poisson's "
-      "ratio (mu = E / (2 (1 + nu))), and agree at small strain.");
+      "'label:name' list (ranges and '*' as for Young's modulus). " +
+        material_law_help() +
+        ". All take mu and lambda from Young's modulus and Poisson's ratio "
+        "(mu = E / (2 (1 + nu))), and agree at small strain.");
     prm.leave_subsection();
   }
 

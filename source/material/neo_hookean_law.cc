@@ -9,6 +9,19 @@ namespace RestShape
 {
   using namespace dealii;
 
+  LawInfo
+  NeoHookeanLaw::info()
+  {
+    LawInfo i;
+    i.name = "neo-Hookean";
+    i.description =
+      "compressible neo-Hookean, W = mu/2 (tr C - 3) - mu ln J + lambda/2 "
+      "(ln J)^2 (its energy grows without bound as a cell collapses: for "
+      "strains of order one)";
+    i.make = law_factory<NeoHookeanLaw>();
+    return i;
+  }
+
   NeoHookeanLaw::NeoHookeanLaw(const LawParameters &parameters)
     : MaterialLaw(parameters)
   {}

@@ -11,6 +11,20 @@ namespace RestShape
 {
   using namespace dealii;
 
+  LawInfo
+  OgdenLaw::info()
+  {
+    LawInfo i;
+    i.name = "Ogden";
+    i.description =
+      "compressible one-term Ogden, W = 2 mu/alpha^2 (sum of the principal "
+      "stretches to the power alpha - 3 - alpha ln J) + lambda/2 (ln J)^2, "
+      "with alpha from Ogden alpha (the brain's law: Budday et al. 2017)";
+    i.make       = law_factory<OgdenLaw>();
+    i.parameters = OgdenLaw::parameters();
+    return i;
+  }
+
   namespace
   {
     /// Eigenvalues below this relative difference count as equal (their

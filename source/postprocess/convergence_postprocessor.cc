@@ -13,7 +13,8 @@ namespace RestShape
   {
     const unsigned int n_cells =
       in.mesh.triangulation().n_global_active_cells();
-    const unsigned int n_dofs = in.forward.dof_handler().n_dofs();
+    const unsigned int n_dofs =
+      in.forward.discretization().dof_handler().n_dofs();
     table.add_value("cycle", in.cycle);
     table.add_value("cells", n_cells);
     table.add_value("dofs", n_dofs);

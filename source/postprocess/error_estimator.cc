@@ -27,23 +27,35 @@ namespace RestShape
         , u(u)
         , flags(update_gradients | update_quadrature_points |
                 update_JxW_values | update_normal_vectors)
-        , cell_face(problem.mapping(), problem.fe(), quadrature, flags)
-        , neighbor_face(problem.mapping(), problem.fe(), quadrature, flags)
+        , cell_face(problem.discretization().mapping(),
+                    problem.discretization().fe(),
+                    quadrature,
+                    flags)
+        , neighbor_face(problem.discretization().mapping(),
+                        problem.discretization().fe(),
+                        quadrature,
+                        flags)
         , indicators(indicators)
       {
-        if (!problem.mesh().is_simplex())
+        if (!problem.discretization().mesh().is_simplex())
           {
             cell_subface = std::make_unique<FESubfaceValues<3>>(
-              problem.mapping(), problem.fe(), quadrature, flags);
+              problem.discretization().mapping(),
+              problem.discretization().fe(),
+              quadrature,
+              flags);
             neighbor_subface = std::make_unique<FESubfaceValues<3>>(
-              problem.mapping(), problem.fe(), quadrature, flags);
+              problem.discretization().mapping(),
+              problem.discretization().fe(),
+              quadrature,
+              flags);
           }
       }
 
       void
       run()
       {
-        const auto &dof_handler = problem.dof_handler();
+        const auto &dof_handler = problem.discretization().dof_handler();
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() && !rigid(cell))
             {
@@ -65,7 +77,7 @@ namespace RestShape
         dofs.resize(cell->get_fe().n_dofs_per_cell());
         cell->get_dof_indices(dofs);
         for (const auto dof : dofs)
-          if (!problem.is_fixed(dof))
+          if (!problem.discretization().is_fixed(dof))
             return false;
         return true;
       }
@@ -173,22 +185,24 @@ namespace RestShape
                  const VectorType                     &u,
                  const RefinementParameters::Estimator estimator)
   {
-    const auto      &dof_handler = problem.dof_handler();
+    const auto      &dof_handler = problem.discretization().dof_handler();
     const auto      &tria        = dof_handler.get_triangulation();
-    const VectorType ghosted     = problem.ghosted_copy(problem.owned_copy(u));
+    const VectorType ghosted     = problem.discretization().ghosted_copy(
+      problem.discretization().owned_copy(u));
 
-    const unsigned int  q               = problem.fe().degree + 1;
-    const Quadrature<2> face_quadrature = problem.mesh().is_simplex() ?
-                                            Quadrature<2>(QGaussSimplex<2>(q)) :
-                                            Quadrature<2>(QGauss<2>(q));
-    ErrorEstimate       estimate;
+    const unsigned int  q = problem.discretization().fe().degree + 1;
+    const Quadrature<2> face_quadrature =
+      problem.discretization().mesh().is_simplex() ?
+        Quadrature<2>(QGaussSimplex<2>(q)) :
+        Quadrature<2>(QGauss<2>(q));
+    ErrorEstimate estimate;
     estimate.indicators.reinit(tria.n_active_cells());
     if (estimator == RefinementParameters::Estimator::traction_jump)
       TractionJump(problem, ghosted, face_quadrature, estimate.indicators)
         .run();
     else
       KellyErrorEstimator<3>::estimate(
-        problem.mapping(),
+        problem.discretization().mapping(),
         dof_handler,
         face_quadrature,
         std::map<types::boundary_id, const Function<3> *>(),
@@ -205,12 +219,13 @@ namespace RestShape
                                                          VectorTools::L2_norm);
 
     // |grad u|_L2 over the body.
-    Vector<float>              cellwise(tria.n_active_cells());
-    const Quadrature<3>        quadrature = problem.mesh().is_simplex() ?
-                                              Quadrature<3>(QGaussSimplex<3>(q)) :
-                                              Quadrature<3>(QGauss<3>(q));
+    Vector<float>       cellwise(tria.n_active_cells());
+    const Quadrature<3> quadrature =
+      problem.discretization().mesh().is_simplex() ?
+        Quadrature<3>(QGaussSimplex<3>(q)) :
+        Quadrature<3>(QGauss<3>(q));
     Functions::ZeroFunction<3> zero(3);
-    VectorTools::integrate_difference(problem.mapping(),
+    VectorTools::integrate_difference(problem.discretization().mapping(),
                                       dof_handler,
                                       ghosted,
                                       zero,

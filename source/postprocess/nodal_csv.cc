@@ -12,9 +12,10 @@ namespace RestShape
   NodalCsv::execute(const PostprocessInput &in)
   {
     TimerOutput::Scope scope(in.timer, "Output");
-    const VectorType w = in.forward.owned_copy(in.forward.rest_displacement());
+    const VectorType   w =
+      in.forward.discretization().owned_copy(in.forward.rest_displacement());
     std::vector<std::vector<double>> rows;
-    for (const Node &node : in.forward.owned_nodes())
+    for (const Node &node : in.forward.discretization().owned_nodes())
       {
         std::vector<double> row;
         for (unsigned int c = 0; c < 3; ++c)

@@ -2,6 +2,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/units.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/postprocess/convergence_postprocessor.h>
 #include <restshape/postprocess/nodal_csv.h>
 #include <restshape/postprocess/postprocessor.h>
@@ -21,28 +23,33 @@ namespace RestShape
                      const MPI_Comm        comm)
   {
     SolveReductions r;
-    const auto [mean_u, max_u] = forward.nodal_norms(u);
+    const auto [mean_u, max_u] = nodal_norms(forward.discretization(), u);
     r.mean_displacement_mm     = mean_u * mm_per_m;
     r.max_displacement_mm      = max_u * mm_per_m;
-    r.n_nodes = Utilities::MPI::sum(double(forward.owned_nodes().size()), comm);
-    r.external = forward.total_external_force(forward.load());
-    r.reaction = forward.support_reaction();
-    r.contact =
-      contact ? contact->total_force(forward.raw_residual()) : Tensor<1, 3>();
-    r.support = forward.elastic_support_force();
-    r.surface = forward.surface_force(forward.load());
+    r.n_nodes =
+      Utilities::MPI::sum(double(forward.discretization().owned_nodes().size()),
+                          comm);
+    r.external = total_external_force(forward, forward.load());
+    r.reaction = support_reaction(forward);
+    r.contact  = contact ?
+                   ContactReport(*contact).total_force(forward.raw_residual()) :
+                   Tensor<1, 3>();
+    r.support  = elastic_support_force(forward);
+    r.surface  = surface_force(forward, forward.load());
     if (contact)
       {
-        r.adhesion = contact->adhesion(forward.raw_residual());
+        r.adhesion = ContactReport(*contact).adhesion(forward.raw_residual());
         if (by_label)
-          r.contact_by_label = contact->force_by_label(forward.raw_residual());
-        r.fixed_planes = contact->fixed_plane_nodes();
+          r.contact_by_label =
+            ContactReport(*contact).force_by_label(forward.raw_residual());
+        r.fixed_planes = ContactReport(*contact).fixed_plane_nodes();
       }
     return r;
   }
 
   std::vector<std::unique_ptr<Postprocessor>>
-  make_postprocessors(const Parameters &parameters, unsigned int &next_step)
+  make_postprocessors(const PostprocessParameters &parameters,
+                      unsigned int                &next_step)
   {
     std::vector<std::unique_ptr<Postprocessor>> list;
     list.push_back(std::make_unique<SummaryPostprocessor>());

@@ -1,5 +1,8 @@
 // The screen lines after a solve.
 #include <restshape/base/units.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/loads/surface_pressure.h>
+#include <restshape/loads/surface_traction.h>
 #include <restshape/postprocess/screen_report.h>
 
 namespace RestShape
@@ -13,11 +16,13 @@ namespace RestShape
     {
       const ContactProblem    &contact    = *in.contact;
       const ContactConditions &conditions = in.forward.contact_conditions();
-      in.pcout << "  Contact: " << contact.n_active() << " active nodes, force "
-               << in.reductions.contact << " N, largest penetration "
+      in.pcout << "  Contact: " << ContactReport(contact).n_active()
+               << " active nodes, force " << in.reductions.contact
+               << " N, largest penetration "
                << conditions.max_penetration * mm_per_m << " mm; "
                << conditions.text() << std::endl;
-      if (in.parameters.inverse.enabled && contact.n_active() > 0)
+      if (in.parameters.inverse.enabled &&
+          ContactReport(contact).n_active() > 0)
         {
           in.pcout << "  Contact at the target, by tissue:";
           const LabelNames &names = in.mesh.label_names();
@@ -42,7 +47,7 @@ namespace RestShape
                     "to "
                  << fixed_distance * mm_per_m << " mm off the obstacle surface"
                  << std::endl;
-      const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
+      const ContactReport::Adhesion &adhesion = in.reductions.adhesion;
       if (adhesion.nodes > 0)
         in.pcout << "  Contact: " << adhesion.nodes
                  << " active nodes pull on the obstacle (accepted), with "
@@ -59,11 +64,15 @@ namespace RestShape
              << r.mean_displacement_mm << " mm; force balance " << r.imbalance()
              << " N of " << r.external.norm() << " N; potential energy "
              << in.forward.potential_energy() << " J" << std::endl;
-    const bool pressure = in.forward.surface_load().acts(in.forward.load());
+    const auto *pressure_term = in.forward.loads().find<SurfacePressure>();
+    const bool  pressure =
+      pressure_term != nullptr && pressure_term->acts(in.forward.load());
     const std::string kind =
-      in.forward.surface_load().follower() ? "follower" : "dead";
-    // surface_force() sums the pressure and the registry's load terms.
-    if (!in.parameters.forward.load_terms.empty())
+      pressure_term != nullptr && pressure_term->surface_load().follower() ?
+        "follower" :
+        "dead";
+    // surface_force() sums the pressure and the other surface loads.
+    if (in.forward.loads().find<SurfaceTraction>() != nullptr)
       in.pcout << "  Surface loads: resultant " << r.surface << " N ("
                << (pressure ? "the " + kind + " pressure and " : "")
                << "the load terms of the scene, e.g. Surface traction)"
@@ -71,7 +80,7 @@ namespace RestShape
     else if (pressure)
       in.pcout << "  Surface pressure: resultant " << r.surface << " N ("
                << kind << " load)" << std::endl;
-    if (in.parameters.forward.boundary.support_stiffness > 0)
+    if (in.forward.loads().has_support())
       in.pcout << "  Elastic support: force " << r.support << " N" << std::endl;
     if (in.contact)
       report_contact(in);

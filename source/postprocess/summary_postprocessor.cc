@@ -1,5 +1,7 @@
 // summary.json after a solve.
 #include <restshape/base/units.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/postprocess/summary_postprocessor.h>
 
 namespace RestShape
@@ -23,7 +25,8 @@ namespace RestShape
     {
       const ContactProblem &contact = *in.contact;
       Summary              &summary = in.summary;
-      summary.set("active_contact_nodes", long(contact.n_active()));
+      summary.set("active_contact_nodes",
+                  long(ContactReport(contact).n_active()));
       summary.set("contact_force_N", in.reductions.contact);
       // What the obstacle carries at the target, tissue by tissue: it
       // tells which rest shape the inverse problem chose (doc/inverse.md).
@@ -41,16 +44,17 @@ namespace RestShape
       const auto [n_fixed, fixed_distance] = in.reductions.fixed_planes;
       summary.set("fixed_plane_nodes", long(n_fixed));
       summary.set("fixed_plane_distance_mm", fixed_distance * mm_per_m + 0.);
-      const ContactProblem::Adhesion &adhesion = in.reductions.adhesion;
+      const ContactReport::Adhesion &adhesion = in.reductions.adhesion;
       summary.set("adhesive_contact_nodes", long(adhesion.nodes));
       summary.set("adhesive_force_N", adhesion.force);
       summary.set("adhesive_force_fraction", adhesion.fraction);
       const auto [p_min, p_max] =
-        contact.pressure_range(in.forward.raw_residual());
+        ContactReport(contact).pressure_range(in.forward.raw_residual());
       summary.set("contact_pressure_min_Pa", p_min);
       summary.set("contact_pressure_max_Pa", p_max);
       summary.set("contact_patch_radius_mm",
-                  contact.patch_radius(in.reductions.contact) * mm_per_m);
+                  ContactReport(contact).patch_radius(in.reductions.contact) *
+                    mm_per_m);
     }
 
     /// A forward run from a rest shape: how far the equilibrium is from
@@ -58,14 +62,15 @@ namespace RestShape
     void
     set_target_error(const PostprocessInput &in)
     {
-      const Parameters &p = in.parameters;
+      const PostprocessParameters &p = in.parameters;
       if (p.inverse.enabled ||
           (p.mesh.rest_shape_file.empty() && in.mesh.targets().empty()))
         return;
       const bool from_rest_file = !p.mesh.rest_shape_file.empty();
       const auto [mean_e, max_e] =
-        from_rest_file ? in.forward.nodal_norms(in.forward.displacement()) :
-                         in.forward.distance_to(in.mesh.targets());
+        from_rest_file ?
+          nodal_norms(in.forward.discretization(), in.forward.displacement()) :
+          distance_to(in.forward, in.mesh.targets());
       in.summary.set("mean_error_mm", mean_e * mm_per_m);
       in.summary.set("max_error_mm", max_e * mm_per_m);
       in.pcout << (from_rest_file ?
@@ -79,10 +84,10 @@ namespace RestShape
   void
   SummaryPostprocessor::execute(const PostprocessInput &in)
   {
-    const Parameters      &p       = in.parameters;
-    const SolveStatistics &stats   = in.stats;
-    const SolveReductions &r       = in.reductions;
-    Summary               &summary = in.summary;
+    const PostprocessParameters &p       = in.parameters;
+    const SolveStatistics       &stats   = in.stats;
+    const SolveReductions       &r       = in.reductions;
+    Summary                     &summary = in.summary;
     summary.set("converged", true);
     summary.set("cell_type",
                 std::string(in.mesh.is_simplex() ? "tetrahedra" : "hexahedra"));
@@ -91,7 +96,8 @@ namespace RestShape
     summary.set("n_cells",
                 long(in.mesh.triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(r.n_nodes));
-    summary.set("n_dofs", long(in.forward.dof_handler().n_dofs()));
+    summary.set("n_dofs",
+                long(in.forward.discretization().dof_handler().n_dofs()));
     summary.set("newton_iterations", long(stats.newton_iterations));
     summary.set("load_steps", long(stats.load_steps));
     if (in.forward.linear_solver_kind() == LinearSolverType::cg_amg)
@@ -116,7 +122,7 @@ namespace RestShape
     summary.set("support_reaction_N", r.reaction);
     summary.set("force_balance_relative",
                 r.imbalance() / std::max(r.external.norm(), 1e-300));
-    if (p.forward.boundary.support_stiffness > 0)
+    if (in.forward.loads().has_support())
       summary.set("elastic_support_force_N", r.support);
     if (in.contact)
       set_contact(in);

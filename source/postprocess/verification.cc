@@ -114,13 +114,14 @@ namespace RestShape
   ExactDisplacement::errors(const ForwardProblem &problem,
                             const VectorType     &field) const
   {
-    const auto      &dof_handler = problem.dof_handler();
+    const auto      &dof_handler = problem.discretization().dof_handler();
     const auto       comm = dof_handler.get_triangulation().get_communicator();
-    const VectorType u    = problem.ghosted_copy(problem.owned_copy(field));
+    const VectorType u    = problem.discretization().ghosted_copy(
+      problem.discretization().owned_copy(field));
 
-    const unsigned int  degree = problem.fe().degree + 2;
+    const unsigned int  degree = problem.discretization().fe().degree + 2;
     const Quadrature<3> quadrature =
-      problem.mesh().is_simplex() ?
+      problem.discretization().mesh().is_simplex() ?
         Quadrature<3>(QGaussSimplex<3>(std::min(degree, 4u))) :
         Quadrature<3>(QGauss<3>(degree));
     const auto &tria = dof_handler.get_triangulation();
@@ -129,11 +130,17 @@ namespace RestShape
                              const Function<3>          &f,
                              const VectorTools::NormType norm) {
       Vector<float> cellwise(tria.n_active_cells());
-      VectorTools::integrate_difference(
-        problem.mapping(), dof_handler, v, f, cellwise, quadrature, norm);
+      VectorTools::integrate_difference(problem.discretization().mapping(),
+                                        dof_handler,
+                                        v,
+                                        f,
+                                        cellwise,
+                                        quadrature,
+                                        norm);
       return VectorTools::compute_global_error(tria, cellwise, norm);
     };
-    const VectorType zero = problem.ghosted_copy(problem.zero_vector());
+    const VectorType zero = problem.discretization().ghosted_copy(
+      problem.discretization().zero_vector());
     Functions::ZeroFunction<3> zero_function(3);
 
     DisplacementErrors e;
@@ -142,11 +149,12 @@ namespace RestShape
     e.l2_relative = norm_of(u, *function, VectorTools::L2_norm) / l2_exact;
     // A translation has no gradient (up to the round-off of the function's
     // difference quotients): the H1 error is then absolute.
-    const double l2_scale = l2_exact / problem.mesh().diameter();
-    e.h1_relative         = norm_of(u, *function, VectorTools::H1_seminorm) /
+    const double l2_scale =
+      l2_exact / problem.discretization().mesh().diameter();
+    e.h1_relative = norm_of(u, *function, VectorTools::H1_seminorm) /
                     (h1_exact > 1e-8 * l2_scale ? h1_exact : 1.0);
 
-    for (const Node &node : problem.owned_nodes())
+    for (const Node &node : problem.discretization().owned_nodes())
       {
         Tensor<1, 3> diff;
         for (unsigned int c = 0; c < 3; ++c)

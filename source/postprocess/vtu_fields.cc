@@ -1,4 +1,5 @@
 // The VTU record of a cycle.
+#include <restshape/contact/contact_report.h>
 #include <restshape/postprocess/vtu_fields.h>
 
 namespace RestShape
@@ -13,8 +14,9 @@ namespace RestShape
     VectorType              contact_fields;
     if (in.contact)
       {
-        contact_fields = in.contact->nodal_fields(in.forward.raw_residual(),
-                                                  in.output.length_scale());
+        contact_fields =
+          ContactReport(*in.contact)
+            .nodal_fields(in.forward.raw_residual(), in.output.length_scale());
         fields.push_back({&contact_fields,
                           {"contact_active",
                            "contact_gap_" + in.parameters.mesh.length_unit_name,

@@ -3,6 +3,7 @@
 //   restshape SCENE.prm                     run a scene
 //   restshape --set 'Sub/Param=value' ...   override parameters (repeatable)
 //   restshape --print-parameters [SUBSECTION]  parameters with defaults
+//   restshape --print-load-terms               the load terms, described
 //   restshape --study 'Sub/Param=v1,v2' ... SCENE.prm  every combination
 //
 // Exit codes: 0 success, 1 bad input, 2 a solver did not converge,
@@ -21,6 +22,7 @@
 #include <restshape/base/parameter_names.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/registered_parameters.h>
+#include <restshape/loads/load_registry.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/solver/linear_solver.h>
 
@@ -36,6 +38,7 @@ namespace
   const char *usage =
     "usage: restshape [--set 'Subsection/Parameter=value']... SCENE.prm\n"
     "       restshape --print-parameters [SUBSECTION]\n"
+    "       restshape --print-load-terms\n"
     "       restshape --version\n"
     "       restshape --study 'Subsection/Parameter=value1,value2,...'...\n"
     "                 [--set 'Subsection/Parameter=value']... SCENE.prm\n"
@@ -150,7 +153,6 @@ main(int argc, char **argv)
     {
       ParameterHandler prm;
       Parameters::declare_parameters(prm);
-      declare_registered_parameters(prm);
 
       std::vector<std::string> overrides;
       for (int i = 1; i < argc; ++i)
@@ -164,6 +166,12 @@ main(int argc, char **argv)
                 ParameterNames(prm).check_top_subsection(only);
               if (root)
                 print_parameters(prm, only);
+              return 0;
+            }
+          else if (arg == "--print-load-terms")
+            {
+              if (root)
+                std::cout << load_terms_reference();
               return 0;
             }
           else if (arg == "--help" || arg == "-h")
@@ -206,12 +214,9 @@ main(int argc, char **argv)
       // Names of labels (the mesh's, Mesh/Label names) become labels.
       MeshParameters mesh_parameters;
       mesh_parameters.parse_parameters(prm);
-      Parameters::replace_label_names(prm,
-                                      scene_label_names(mesh_parameters),
-                                      registered_label_entries());
+      Parameters::replace_label_names(prm, scene_label_names(mesh_parameters));
       Parameters parameters;
-      parameters.parse_parameters(prm, scenarios, registered_label_entries());
-      parse_registered_parameters(prm, parameters.forward);
+      parameters.parse_parameters(prm, scenarios);
       // Destroy the simulator (and its TimerOutput, which prints a banner
       // when destroyed during stack unwinding) before reporting an error.
       std::exception_ptr error;

@@ -94,8 +94,8 @@ namespace RestShape::Test
   inline VectorType
   nodal_field(const ForwardProblem &f, const Field &field)
   {
-    VectorType v = f.zero_vector();
-    for (const Node &node : f.owned_nodes())
+    VectorType v = f.discretization().zero_vector();
+    for (const Node &node : f.discretization().owned_nodes())
       {
         const dealii::Tensor<1, 3> value = field(node.position);
         for (unsigned int c = 0; c < 3; ++c)
@@ -151,8 +151,13 @@ namespace RestShape::Test
     ContactProblem &
     add_contact()
     {
-      contact =
-        std::make_unique<ContactProblem>(parameters.contact, *forward, timer);
+      contact = std::make_unique<ContactProblem>(
+        parameters.contact,
+        forward->discretization(),
+        *forward,
+        parameters.forward.solver.newton_tolerance,
+        materials->max_youngs_modulus(),
+        timer);
       forward->set_contact(contact.get());
       forward->setup();
       contact->setup();

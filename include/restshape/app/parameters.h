@@ -15,6 +15,7 @@
 #include <restshape/inverse/inverse_parameters.h>
 #include <restshape/io/output_parameters.h>
 #include <restshape/mesh/mesh_parameters.h>
+#include <restshape/postprocess/postprocessor.h>
 #include <restshape/postprocess/refinement_parameters.h>
 #include <restshape/postprocess/verification_parameters.h>
 
@@ -38,27 +39,30 @@ namespace RestShape
     /// mesh's labels by the Simulator).
     std::vector<LabelList> label_lists;
 
+    /// Every part's parameters, and those the registered material laws and
+    /// load terms declare themselves (registered_parameters.h).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /// Throws InputError (without file name; the caller adds it).
     /// @p scenario_names: the named scenarios declared (read_scene()).
-    /// @p more_label_lists: parameters declared elsewhere that name labels
-    /// (registered_label_entries()).
     void
-    parse_parameters(dealii::ParameterHandler          &prm,
-                     const std::vector<std::string>    &scenario_names   = {},
-                     const std::vector<LabelListEntry> &more_label_lists = {});
+    parse_parameters(dealii::ParameterHandler       &prm,
+                     const std::vector<std::string> &scenario_names = {});
 
     /**
      * Replace the label names in every label list of @p prm by their
      * labels (replace_label_names()), before parse_parameters(). Throws
      * InputError naming the parameter for an unknown name.
      */
+    /// The slices the postprocessors read.
+    PostprocessParameters
+    postprocess_parameters() const
+    {
+      return {mesh, forward, inverse, refinement, verification, output};
+    }
+
     static void
-    replace_label_names(
-      dealii::ParameterHandler          &prm,
-      const LabelNames                  &names,
-      const std::vector<LabelListEntry> &more_label_lists = {});
+    replace_label_names(dealii::ParameterHandler &prm, const LabelNames &names);
   };
 } // namespace RestShape
 

@@ -29,23 +29,6 @@ namespace RestShape
   std::map<Label, TissueShift>
   tissue_shifts(const ForwardProblem &forward, const VectorType &u);
 
-  /// A point of the free surface of the scene's fluid under the body
-  /// acceleration given (m).
-  using FreeSurface =
-    std::function<dealii::Point<3>(const dealii::Tensor<1, 3> &)>;
-
-  /// The scene's load @p scene changed as @p p says: gravity rotated (with
-  /// the buoyancy or the hydrostatic pressure), the fluid drained below a
-  /// level, the surface pressure set, a tissue body force added, an
-  /// opening at atmospheric pressure. @p loads: how the fluid acts;
-  /// @p free_surface: where the hydrostatic fluid's surface lies under the
-  /// turned gravity when no level is given.
-  LoadState
-  changed_load(const ScenarioParameters &p,
-               const LoadParameters     &loads,
-               const LoadState          &scene,
-               const FreeSurface        &free_surface);
-
   /// InputError (without file name) for a scenario that changes nothing it
   /// says: a fluid level above the whole body (nothing drained), an
   /// opening that contains no face of the body.

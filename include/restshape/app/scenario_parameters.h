@@ -7,8 +7,10 @@
 #include <deal.II/base/tensor.h>
 
 #include <restshape/base/region.h>
-#include <restshape/loads/load_parameters.h>
+#include <restshape/loads/environment_parameters.h>
+#include <restshape/loads/scenario_change.h>
 
+#include <map>
 #include <string>
 
 namespace RestShape
@@ -21,22 +23,26 @@ namespace RestShape
    */
   struct ScenarioParameters
   {
-    std::string          name; // empty: subsection "Scenario"
-    bool                 enabled = false;
-    dealii::Tensor<1, 3> rotation_degrees; // about x, then y, then z
-    bool                 has_fluid_level = false;
-    dealii::Point<3>     fluid_level; // m (given in the mesh's length unit)
-    bool                 has_pressure = false;
-    double               pressure     = 0;    // Pa
-    dealii::Tensor<1, 3> tissue_acceleration; // m/s^2
-    Region               craniotomy;          // m (given in the mesh unit)
+    std::string name; // empty: subsection "Scenario"
+    bool        enabled = false;
+    /// What it changes, as the load terms see it: gravity rotated (about
+    /// x, then y, then z), the fluid drained to a level (m, given in the
+    /// mesh's length unit), the craniotomy (m), the values of the load
+    /// terms' own entries (e.g. Surface pressure, Tissue body force).
+    ScenarioChange change;
+    /// Scenario/Load scale: load name -> factor.
+    std::map<std::string, double> scale;
 
     /// The subsection "Scenario" (@p name empty) or "Scenario NAME".
     static void
     declare_parameters(dealii::ParameterHandler &prm,
                        const std::string        &name = "");
+    /// @p length_unit: metres per unit of the mesh, in which the fluid
+    /// level and the craniotomy are given.
     void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &name);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const std::string        &name,
+                     const double              length_unit);
     /// "Scenario" or "Scenario NAME": what error messages name.
     std::string
     section() const;
@@ -48,10 +54,17 @@ namespace RestShape
     /// the file and Scenario/Craniotomy.
     void
     read_surfaces();
-    /// InputError for what an enabled scenario cannot do with these
-    /// @p loads, or without the inverse problem (@p inverse_enabled).
+    /// The value of the load term's entry @p e into change.values.
     void
-    check(const LoadParameters &loads, const bool inverse_enabled) const;
+    parse_entry(dealii::ParameterHandler &prm, const ScenarioEntry &e);
+    /// Load scale's 'NAME: factor' list into scale.
+    void
+    parse_scale(const std::string &text);
+    /// InputError for what an enabled scenario cannot do in this
+    /// @p environment, or without the inverse problem (@p inverse_enabled).
+    void
+    check(const EnvironmentParameters &environment,
+          const bool                   inverse_enabled) const;
   };
 } // namespace RestShape
 

@@ -71,7 +71,7 @@ namespace RestShape
     unheld_pieces_text() const;
     void
     setup_problems();
-    /// ContactProblem::check_placement(), on the target of a rest shape
+    /// AdmissibleTarget::check_placement(), on the target of a rest shape
     /// that carries one (rest_shape.msh).
     void
     check_obstacle_placement() const;
@@ -124,6 +124,7 @@ namespace RestShape
     write_summary(const SolveStatistics &stats);
 
     const Parameters               &parameters;
+    const PostprocessParameters     postprocess_parameters;
     const dealii::ParameterHandler &prm;
     const std::string               prm_file;
     const MPI_Comm                  comm;

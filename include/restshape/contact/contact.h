@@ -6,10 +6,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <restshape/base/region.h>
 #include <restshape/contact/contact_parameters.h>
 #include <restshape/contact/held_planes.h>
 #include <restshape/contact/obstacle.h>
-#include <restshape/forward/forward_problem.h>
+#include <restshape/fem/discretization.h>
+#include <restshape/fem/state_reader.h>
 #include <restshape/solver/active_set_constraints.h>
 
 #include <array>
@@ -49,44 +51,21 @@ namespace RestShape
   class ContactProblem : public ActiveSetConstraints
   {
   public:
+    /// Contact of the body on @p discretization, whose displacement
+    /// @p state holds (the forward problem). @p newton_tolerance (relative
+    /// residual, Solver/Newton tolerance) sets the gap tolerance,
+    /// @p max_youngs_modulus (Pa) the active-set constant.
     ContactProblem(const ContactParameters &parameters,
-                   const ForwardProblem    &forward,
+                   const Discretization    &discretization,
+                   const StateReader       &state,
+                   const double             newton_tolerance,
+                   const double             max_youngs_modulus,
                    dealii::TimerOutput     &timer);
     ~ContactProblem();
 
     /// Find candidate nodes and their areas (after ForwardProblem::setup()).
     void
     setup();
-
-    /**
-     * Check, before solving, that the obstacle is where the body is: throws
-     * InputError (Contact/Obstacle file) with the counts and both bounding
-     * boxes if more than Contact/Maximum outside fraction of the candidates
-     * lie on the wrong side in the mesh geometry, or if every candidate is
-     * farther from the obstacle than the body's size (no contact can occur:
-     * an obstacle elsewhere, or in other units). @p shift (owned, m), if
-     * given, moves the candidates first: from a rest shape that carries
-     * its target to that target, which the obstacle must hold (a rest
-     * shape may cross it).
-     */
-    void
-    check_placement(const VectorType *shift = nullptr) const;
-
-    /**
-     * The admissible target: the mesh geometry with every contact
-     * candidate that lies beyond the obstacle (by more than the gap
-     * tolerance) moved onto it, to its closest point. Returns that move
-     * (owned vector, m; zero at every other DoF): the part of the target
-     * that no equilibrium can reach.
-     */
-    VectorType
-    admissible_target_shift() const;
-
-    /// The inward normals (towards the allowed side) of the candidates that
-    /// touch the obstacle or lie beyond it in the mesh geometry (the
-    /// contact nodes of the admissible target), from every rank.
-    std::vector<dealii::Tensor<1, 3>>
-    target_normals() const;
 
     /// The obstacle's surface.
     const Obstacle &
@@ -123,27 +102,6 @@ namespace RestShape
     /// Undo remove_contact(): contact allowed again where it was opened.
     void
     close_openings();
-    /**
-     * Until restore_contact(), only the candidates that touch the obstacle
-     * at the target (the mesh geometry moved by @p target_shift, owned, m:
-     * gap <= gap tolerance) may take contact; the others are removed as by
-     * remove_contact(). Returns how many keep it (all ranks).
-     */
-    unsigned int
-    keep_target_contacts(const VectorType &target_shift);
-    /// Undo keep_target_contacts() (the openings of remove_contact() stay).
-    void
-    restore_contact();
-    /**
-     * The obstacle's forces on the active nodes at the state of the last
-     * update, turned normal to the obstacle at the target (the mesh
-     * geometry moved by @p target_shift): max(0, lambda_i) n_i at the
-     * node's DoFs (owned, N; zero elsewhere).
-     */
-    VectorType
-    target_forces(const VectorType &raw_residual,
-                  const VectorType &target_shift) const;
-
     /// The active and eligible flags of every candidate: saved with an
     /// equilibrium, restored with it when a step is taken back.
     State
@@ -258,77 +216,17 @@ namespace RestShape
     std::string
     progress_text() const override;
 
-    // --- results at the state of the last update ------------------------
-    unsigned int
-    n_active() const;
-    /// Active nodes that hold the planes of two or three faces (creases and
-    /// corners of the obstacle's triangulation).
-    unsigned int
-    n_held() const;
-    /// Active nodes whose planes kept changing and are fixed for the rest of
-    /// the solve, and the largest distance of one of them from the obstacle
-    /// surface (m): they meet their planes' constraints, not the surface's.
-    std::pair<unsigned int, double>
-    fixed_plane_nodes() const;
-    /// Active nodes whose own contact force pulls on the obstacle (accepted
-    /// below 0.1 % of the contact force, or as grazing, or when the thaws
-    /// ran out): how many, their summed pull (N) and its ratio to the summed
-    /// push of the others.
-    struct Adhesion
-    {
-      unsigned int nodes    = 0;
-      double       force    = 0;
-      double       fraction = 0;
-    };
-    Adhesion
-    adhesion(const VectorType &raw_residual) const;
-    /// Sum of the obstacle's forces on the body (N).
-    dealii::Tensor<1, 3>
-    total_force(const VectorType &raw_residual) const;
-    /// The same force by label (N, every label of the mesh): an active
-    /// node's force counts for the labels of the cells around it, in equal
-    /// shares; the shares add up to total_force().
-    std::map<Label, dealii::Tensor<1, 3>>
-    force_by_label(const VectorType &raw_residual) const;
-    /// Largest penetration (-gap) of an eligible node (m), and of any node.
-    double
-    max_penetration(const bool eligible_only) const;
-    /**
-     * Per node: x slot 1 for active nodes, y slot the gap (in metres times
-     * @p length_scale), z slot the contact pressure (Pa).
-     */
-    VectorType
-    nodal_fields(const VectorType &raw_residual,
-                 const double      length_scale) const;
-    /// Smallest and largest contact pressure over active nodes (Pa).
-    std::pair<double, double>
-    pressure_range(const VectorType &raw_residual) const;
-    /// Largest distance of an active node from the axis through @p point
-    /// along @p direction (m): the radius of the contact zone.
-    double
-    contact_radius(const dealii::Point<3>     &point,
-                   const dealii::Tensor<1, 3> &direction) const;
-    /// contact_radius() about the axis through the centroid of the active
-    /// nodes along @p direction (m; 0 without active nodes): the radius of
-    /// a contact patch whose centre is not known in advance.
-    double
-    patch_radius(const dealii::Tensor<1, 3> &direction) const;
-    unsigned int
-    n_candidates() const;
-    /// Candidates beyond the obstacle (gap < -g_tol), eligible or not.
-    unsigned int
-    n_outside() const;
-
     /// Tolerance on gaps (m): the Newton tolerance times the body's size
     /// (gaps are resolved as tightly as the residual), at least 1e-10 of
     /// the size.
     const double gap_tolerance;
 
   private:
-    /// Part of check_placement(): every vertex of a fixed label is on the
-    /// allowed side, or less than @p depth (m) beyond it.
-    void
-    check_fixed_labels_enclosed(const double depth) const;
+    // What the contact carries and where (contact_report.h), and the
+    // target the obstacle admits (admissible_target.h), read the
+    // candidates.
+    friend class ContactReport;
+    friend class AdmissibleTarget;
     using Plane = ContactPlane;
 
     struct Candidate
@@ -349,7 +247,7 @@ namespace RestShape
       double surface_slope = 1;
       bool   removed       = false; // in an opening (remove_contact())
       bool   opened        = false; // removed by remove_contact()
-      bool   set_aside     = false; // by keep_target_contacts()
+      bool   set_aside     = false; // by AdmissibleTarget::keep_contacts()
       /// Released for pulling and back through the obstacle in this solve:
       /// it pulls when held and penetrates when free, so it is held and its
       /// pull accepted (not released again in this solve).
@@ -398,6 +296,14 @@ namespace RestShape
     reaction(const Candidate     &c,
              const VectorType    &raw_residual,
              std::vector<double> *multipliers = nullptr) const;
+    /// A candidate that may no longer take contact (an opening, a
+    /// contact the target does not keep).
+    static void
+    take_out(Candidate &c);
+    /// The candidates taken out for the reason @p why (a flag of theirs)
+    /// may take contact again.
+    void
+    put_back(bool Candidate::*why);
     /// Forget the held planes and locks of a node (a new solve, or a node
     /// that is not active while releases are frozen).
     static void
@@ -440,12 +346,11 @@ namespace RestShape
     /// its secant slope from the last update (Candidate::surface_slope).
     static void
     measure_surface_slope(Candidate &c, const dealii::Point<3> &x, double gap);
-    /// Contact pressure of every candidate (Pa; 0 where inactive).
-    std::vector<double>
-    pressures(const VectorType &raw_residual) const;
 
     const ContactParameters   parameters;
-    const ForwardProblem     &forward;
+    const Discretization     &discretization;
+    const StateReader        &forward_state;
+    const double              max_youngs_modulus; // Pa
     dealii::TimerOutput      &timer;
     std::unique_ptr<Obstacle> obstacle;
     /// A boundary face of a contact label: its candidate nodes with, for

@@ -4,7 +4,7 @@
 #define restshape_target_relaxation_h
 
 #include <restshape/contact/obstacle.h>
-#include <restshape/forward/forward_problem.h>
+#include <restshape/fem/discretization.h>
 
 #include <string>
 #include <vector>
@@ -45,7 +45,8 @@ namespace RestShape
   class TargetRelaxation
   {
   public:
-    TargetRelaxation(const ForwardProblem &forward, const Obstacle &obstacle);
+    TargetRelaxation(const Discretization &discretization,
+                     const Obstacle       &obstacle);
 
     /// Relax @p shift (owned, m) in place.
     TargetRelaxationResult
@@ -64,9 +65,9 @@ namespace RestShape
     static constexpr unsigned int patience = 20;
 
   private:
-    /// The nodes (indices into forward.relevant_nodes()) of each locally
-    /// owned cell, in the order of the base element's support points, and
-    /// the vertices' linear weights at those points.
+    /// The nodes (indices into forward.discretization().relevant_nodes()) of
+    /// each locally owned cell, in the order of the base element's support
+    /// points, and the vertices' linear weights at those points.
     void
     collect_cell_nodes();
     /// Mark the nodes of cells with det(I + grad s) < minimum_jacobian in
@@ -90,7 +91,7 @@ namespace RestShape
     keep_inside(const dealii::Point<3> &position,
                 dealii::Tensor<1, 3>   &shift) const;
 
-    const ForwardProblem                  &forward;
+    const Discretization                  &discretization;
     const Obstacle                        &obstacle;
     std::vector<std::vector<unsigned int>> cell_nodes;
     std::vector<bool>                      node_fixed; // all three DoFs fixed

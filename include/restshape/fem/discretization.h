@@ -13,9 +13,9 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <restshape/forward/forward_parameters.h>
+#include <restshape/base/linear_algebra_types.h>
+#include <restshape/fem/discretization_parameters.h>
 #include <restshape/mesh/labelled_mesh.h>
-#include <restshape/solver/linear_solver.h>
 
 #include <array>
 #include <memory>
@@ -23,6 +23,11 @@
 
 namespace RestShape
 {
+  /// "label 1 at (x, y, z) mm of the mesh": where a cell is (@p center in m).
+  std::string
+  cell_location_text(const dealii::types::material_id label,
+                     const dealii::Point<3>          &center);
+
   /// A mesh node: its three displacement DoFs and its mesh position (m).
   struct Node
   {
@@ -35,7 +40,8 @@ namespace RestShape
   public:
     /// The element and quadrature of Discretization/Polynomial degree on
     /// @p mesh; setup_dofs() distributes the DoFs.
-    Discretization(const ForwardParameters &parameters, LabelledMesh &mesh);
+    Discretization(const DiscretizationParameters &parameters,
+                   LabelledMesh                   &mesh);
     ~Discretization();
 
     /// Distribute DoFs, find the nodes, build the hanging-node and
@@ -59,6 +65,24 @@ namespace RestShape
     /// Hanging nodes and fixed labels.
     const dealii::AffineConstraints<double> &
     base_constraints() const;
+    /// Hanging nodes only.
+    const dealii::AffineConstraints<double> &
+    hanging_constraints() const
+    {
+      return constraints_hanging;
+    }
+    /// Discretization and Boundary conditions/Fixed labels.
+    const DiscretizationParameters &
+    parameters() const
+    {
+      return settings;
+    }
+    /// The communicator of the mesh.
+    MPI_Comm
+    communicator() const
+    {
+      return comm;
+    }
     const dealii::IndexSet &
     locally_owned_dofs() const;
     const dealii::IndexSet &
@@ -113,9 +137,9 @@ namespace RestShape
                       const VectorType          &w);
 
   protected:
-    const ForwardParameters &parameters;
-    LabelledMesh            &labelled_mesh;
-    const MPI_Comm           comm;
+    const DiscretizationParameters &settings;
+    LabelledMesh                   &labelled_mesh;
+    const MPI_Comm                  comm;
 
     std::unique_ptr<dealii::Mapping<3>> mapping_;
     dealii::FESystem<3>                 fe_;

@@ -1,11 +1,11 @@
 // The forward problem: static equilibrium of the body under its load terms
-// (load_term.h: body force, surface pressure, elastic support and those of
+// (load_set.h: body force, surface pressure, elastic support and those of
 // the registry), fixed labels (and contact). It is the NewtonSystem that
 // its NewtonSolver (newton_solver.h: line search, load stepping) solves.
 // Implemented in forward_problem.cc (set-up, state),
-// forward_problem_assembly.cc, forward_problem_loads.cc,
-// forward_problem_solve.cc (the solves, the tangent's solves) and
-// forward_problem_results.cc.
+// forward_problem_assembly.cc, forward_problem_loads.cc and
+// forward_problem_solve.cc (the solves, the tangent's solves); what is
+// derived from its state in forward_results.cc.
 #ifndef restshape_forward_problem_h
 #define restshape_forward_problem_h
 
@@ -23,11 +23,12 @@
 #include <restshape/fem/cell_local_indices.h>
 #include <restshape/fem/constraint_lookup.h>
 #include <restshape/fem/discretization.h>
+#include <restshape/fem/state_reader.h>
 #include <restshape/fem/tangent_scatter.h>
 #include <restshape/forward/forward_parameters.h>
+#include <restshape/loads/load_set.h>
 #include <restshape/loads/load_state.h>
 #include <restshape/loads/load_term.h>
-#include <restshape/loads/surface_pressure.h>
 #include <restshape/material/material_table.h>
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/solver/active_set_conditions.h>
@@ -46,21 +47,16 @@
 namespace RestShape
 {
 
-  /// "label 1 at (x, y, z) mm of the mesh": where a cell is (@p center in m).
-  std::string
-  cell_location_text(const dealii::types::material_id label,
-                     const dealii::Point<3>          &center);
-
-  class ForwardProblem : public Discretization, public NewtonSystem
+  /**
+   * The forward problem. It owns its discretisation (discretization()) and
+   * its load terms (loads()), and is the NewtonSystem (privately: only its
+   * NewtonSolver calls that protocol) that its NewtonSolver solves. What
+   * is derived from its state (norms, forces, stresses) are free functions
+   * (forward_results.h).
+   */
+  class ForwardProblem : public StateReader, private NewtonSystem
   {
   public:
-    /// Relative residual at which Newton stops (Solver/Newton tolerance).
-    double
-    newton_tolerance() const
-    {
-      return parameters.solver.newton_tolerance;
-    }
-
     ForwardProblem(const ForwardParameters    &parameters,
                    LabelledMesh               &mesh,
                    const MaterialTable        &materials,
@@ -71,7 +67,6 @@ namespace RestShape
     /// Distribute DoFs, build constraints and the matrix; zero state.
     void
     setup();
-
     /// Optional contact (owned by the caller; nullptr: none). Its setup()
     /// must follow setup().
     void
@@ -86,7 +81,6 @@ namespace RestShape
      */
     SolveStatistics
     solve(const LoadState &load, const VectorType &rest);
-
     /**
      * Equilibrium under @p load with rest displacement @p rest (owned
      * vectors) by Newton's method at the full load from the displacement
@@ -99,44 +93,27 @@ namespace RestShape
                const LoadState  &load,
                const VectorType &rest);
 
-    /// The load state of the paper's scene: gravity and the CSF pressure.
-    LoadState
-    scene_load() const;
-    /// The pressure faces' point (mesh geometry, m) highest against
-    /// @p acceleration: the free surface of a fluid that wets them all.
-    dealii::Point<3>
-    highest_pressure_point(const dealii::Tensor<1, 3> &acceleration) const;
-    /// A craniotomy: pressure faces centred in @p opening (mesh geometry)
-    /// lose the opening's pressure; the tangent turns non-symmetric (a
-    /// follower load stopping at the rim). Returns their number. An empty
-    /// region closes the opening again.
-    unsigned int
-    open_surface(const Region &opening);
-
-    // --- state ---------------------------------------------------------
-    /// Equilibrium displacement from the mesh geometry (ghosted, m).
-    const VectorType &
-    displacement() const;
-    /// Rest displacement X_rest - X_mesh (ghosted, m).
-    const VectorType &
-    rest_displacement() const;
-    const LoadState &
-    load() const;
-    /// Set the state (owned vectors); the caller vouches for equilibrium.
-    void
-    set_state(const VectorType &d, const VectorType &w, const LoadState &l);
-
-    /**
-     * Check a rest displacement: false (with the number of bad cells) if
-     * det(I + grad w) <= 0 at some quadrature point of a cell, i.e. the rest
-     * shape has inverted or degenerate cells; then @p where, if given, says
-     * where one of them is ("label 1 at (x, y, z) mm of the mesh").
-     */
-    bool
-    rest_shape_is_valid(const VectorType &rest,
-                        unsigned int     &n_bad,
-                        std::string      *where = nullptr) const;
-
+    // --- what it is made of --------------------------------------------
+    /// The finite element space, its DoFs, nodes and base constraints.
+    const Discretization &
+    discretization() const
+    {
+      return discretization_;
+    }
+    /// The scene's load terms (after setup()): its load
+    /// (LoadSet::scene_load()), a scenario's change and openings.
+    const LoadSet &
+    loads() const
+    {
+      return load_set;
+    }
+    LoadSet &
+    loads()
+    {
+      return load_set;
+    }
+    const MaterialTable &
+    materials() const;
     /// The scene's parameters of the forward problem.
     const ForwardParameters &
     scene_parameters() const
@@ -149,98 +126,57 @@ namespace RestShape
     {
       return linear_solver_type;
     }
-    const MaterialTable &
-    materials() const;
 
-    // --- derived quantities --------------------------------------------
-    /// Mean and max over all nodes of |v| at the node (v owned or ghosted,
-    /// a displacement-like field; m).
-    std::pair<double, double>
-    nodal_norms(const VectorType &v) const;
-    /// Over all ranks: the nodes where |v| > @p threshold (m), the mean of
-    /// |v| over them and the largest |v| (v owned or ghosted).
-    struct NodalNorms
-    {
-      unsigned int n    = 0;
-      double       mean = 0, max = 0;
-    };
-    NodalNorms
-    nodal_norms_above(const VectorType &v, const double threshold) const;
-    /// Mean and max over the mesh vertices with a target of the distance
-    /// (m) between the current position X + d and @p targets (indexed by
-    /// triangulation vertex; vertices beyond its size are skipped).
-    std::pair<double, double>
-    distance_to(const std::vector<dealii::Point<3>> &targets) const;
-    /**
-     * Per active cell (by LabelledMesh::cell_index(), from every rank): its
-     * mass in the image over its density times its volume in the rest
-     * shape X + w, i.e. the mesh's mass ratio times V_mesh / V_rest. What
-     * a rest_shape.msh carries (LabelledMesh::mass_ratio()).
-     */
-    std::vector<double>
-    image_mass_ratios() const;
-    /// Element-averaged von Mises Cauchy stress (Pa) of the current state,
-    /// one value per active cell (zero on cells not owned here).
-    dealii::Vector<float>
-    von_mises_stress() const;
-    /// The smallest det F (volume ratio of the current state to the rest
-    /// shape) over all quadrature points, and where ("label 1 at (x, y, z)
-    /// mm of the mesh").
-    struct Compression
-    {
-      double      det_F = std::numeric_limits<double>::max();
-      std::string where;
-    };
-    Compression
-    most_compressed_cell() const;
-    /// Total external force of @p load (N): the weight (less the buoyancy
-    /// with Fluid load = buoyancy) plus surface_force().
-    dealii::Tensor<1, 3>
-    total_external_force(const LoadState &load) const;
-    /// Resultant (N) of the surface loads of @p load at the current state
-    /// (the pressure: on the current surface for a follower load, on the
-    /// mesh's faces for a dead one; the registry's face loads), supports
-    /// left out.
-    dealii::Tensor<1, 3>
-    surface_force(const LoadState &load) const;
-    /// The surface pressure, its level and whether it follows the surface.
-    const SurfaceLoad &
-    surface_load() const;
-    /// Whether the tangent is symmetric: false for a follower pressure on a
-    /// surface with free edges (not conservative), or a load term's own.
-    bool
-    tangent_is_symmetric() const;
+    // --- state ---------------------------------------------------------
+    /// Equilibrium displacement from the mesh geometry (ghosted, m).
+    const VectorType &
+    displacement() const override;
+    /// Rest displacement X_rest - X_mesh (ghosted, m).
+    const VectorType &
+    rest_displacement() const override;
+    const LoadState &
+    load() const;
+    /// Set the state (owned vectors); the caller vouches for equilibrium.
+    void
+    set_state(const VectorType &d, const VectorType &w, const LoadState &l);
 
-    /// Resultant (N) of the elastic support's tractions on the body.
-    dealii::Tensor<1, 3>
-    elastic_support_force() const;
-    /// Sum over fixed DoFs of the internal forces: the support reaction (N).
-    dealii::Tensor<1, 3>
-    support_reaction() const;
     /**
      * Total potential energy of the last assembled state (after solve():
      * the final state), in J: the strain energy over the rest shape, plus
      * the elastic support's k/2 |d - w|^2 over its faces, minus the work
      * f_ext . (d - w) of the dead loads (gravity, CSF pressure) from the
      * rest shape. Zero in the rest shape; Newton's residual is its negative
-     * gradient. A
-     * stable equilibrium is a local minimum: of two equilibria of the same
-     * scene and mesh, the one with the lower energy is the one the body
-     * prefers. NaN after set_state() until the next assembly.
+     * gradient. A stable equilibrium is a local minimum: of two equilibria
+     * of the same scene and mesh, the one with the lower energy is the one
+     * the body prefers. NaN after set_state() until the next assembly.
      */
     double
     potential_energy() const;
     /**
+     * f_ext - f_int at the last assembled state (after solve(): the final
+     * state), condensed only for hanging nodes: at fixed DoFs it is minus
+     * the support reaction, at contact nodes minus the contact force (N).
+     */
+    const VectorType &
+    raw_residual() const override;
+    /// The residual of the last assembly with the Newton constraints
+    /// condensed (external minus internal forces, N; zero at constrained
+    /// DoFs, owned).
+    const VectorType &
+    condensed_residual() const override
+    {
+      return residual_condensed;
+    }
+    /**
      * Assemble the raw residual at the current state (for the direct
-     * inverse, tests and diagnostics). Returns false if a cell is
-     * inverted.
+     * inverse, tests and diagnostics) and, with @p tangent, the tangent
+     * (Dirichlet rows condensed). Returns false if a cell is inverted.
      */
     bool
-    evaluate_residual();
-    /// evaluate_residual() and the tangent (Dirichlet rows condensed).
-    bool
-    evaluate_with_tangent();
-
+    evaluate(const bool tangent = false);
+    /// The tangent of the last evaluate(true) or Newton step.
+    const MatrixType &
+    tangent_matrix() const;
     /// The contact conditions checked at the end of the last Newton solve
     /// with contact (ActiveSetConstraints::check_conditions()).
     const ContactConditions &
@@ -249,6 +185,7 @@ namespace RestShape
       return newton_solver.contact_conditions();
     }
 
+    // --- solves with the tangent of the current state ------------------
     /**
      * For solves with the tangent of the current state (stability check,
      * direct inverse): assemble the consistent tangent (whatever
@@ -282,27 +219,8 @@ namespace RestShape
       return constraints_newton;
     }
 
-    /// The tangent of the last evaluate(true) or Newton step.
-    const MatrixType &
-    tangent_matrix() const;
-
-    /**
-     * f_ext - f_int at the last assembled state (after solve(): the final
-     * state), condensed only for hanging nodes: at fixed DoFs it is minus
-     * the support reaction, at contact nodes minus the contact force (N).
-     */
-    const VectorType &
-    raw_residual() const override;
-    /// The residual of the last assembly with the Newton constraints
-    /// condensed (external minus internal forces, N; zero at constrained
-    /// DoFs, owned).
-    const VectorType &
-    condensed_residual() const override
-    {
-      return residual_condensed;
-    }
-
-    // --- NewtonSystem (newton_system.h) ---------------------------------
+  private:
+    // --- NewtonSystem (newton_system.h): its NewtonSolver's protocol ----
     VectorType &
     unknowns() override
     {
@@ -360,7 +278,6 @@ namespace RestShape
     std::string
     compression_text() const override;
 
-  private:
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.
     LinearSolverType
     resolve_linear_solver() const;
@@ -375,29 +292,10 @@ namespace RestShape
       residual_and_magnitudes
     };
 
-    /// The load terms: the body force, the surface pressure, the elastic
-    /// support, and those the scene enables from the registry
-    /// (ForwardParameters::load_terms). Throws InputError if the fluid wets no
-    /// pressure face.
+    /// The load terms the scene enables (ForwardParameters::load_terms).
+    /// Throws InputError if the fluid wets no pressure face.
     void
     setup_load_terms();
-    /// Whether the body force of @p load varies within a cell (the fluid
-    /// drained above a level that may cross it).
-    bool
-    body_force_varies(const LoadState &load) const;
-    /// The body force per unit mesh volume (N/m^3) of @p load at the point
-    /// @p X of @p cell (mesh geometry): the sum of the load terms'.
-    dealii::Tensor<1, 3>
-    body_force(const dealii::CellAccessor<3, 3> &cell,
-               const dealii::Point<3>           &X,
-               const LoadState                  &load) const;
-    /// The face terms of the load terms on @p cell: first the dead ones,
-    /// then the dead loads' potential -f_ext . (d - w), then the others.
-    void
-    assemble_load_terms(const CellIterator &cell,
-                        ScratchData        &scratch,
-                        CopyData           &copy,
-                        const bool          matrix) const;
     void
     compute_rigid_body_modes();
 
@@ -418,6 +316,8 @@ namespace RestShape
       CopyData                                                   &copy,
       const Assemble                                              what) const;
 
+    const ForwardParameters    &parameters;
+    Discretization              discretization_;
     const MaterialTable        &material_table;
     dealii::TimerOutput        &timer;
     dealii::ConditionalOStream &pcout;
@@ -462,12 +362,7 @@ namespace RestShape
     /// body_force_varies(current_load), set at each assembly.
     bool current_body_force_varies = false;
 
-    std::vector<std::unique_ptr<LoadTerm>> load_terms; // setup_load_terms()
-    /// The built-in terms among them (the surface pressure's level and
-    /// opening are set from outside).
-    SurfacePressure *pressure_term = nullptr;
-    /// The load terms with a body force.
-    std::vector<const LoadTerm *> body_terms;
+    LoadSet load_set; // setup_load_terms()
 
     std::unique_ptr<LinearSolver> linear_solver;
     ActiveSetConstraints         *contact = nullptr;

@@ -1,5 +1,5 @@
-// The parameters that the registered material laws (material_laws.h) and
-// load terms (load_terms.h) declare themselves, beside those of the part
+// The parameters that the registered material laws (law_registry.h) and
+// load terms (load_registry.h) declare themselves, beside those of the part
 // structs.
 #ifndef restshape_forward_registered_parameters_h
 #define restshape_forward_registered_parameters_h
@@ -22,12 +22,14 @@ namespace RestShape
   std::vector<LabelListEntry>
   registered_label_entries();
 
-  /// Parse them into @p parameters (after Parameters::parse_parameters()):
-  /// the laws' values and the load terms the scene enables. Throws
+  /// Parse them into @p parameters (after ForwardParameters::
+  /// parse_parameters()): the laws' values and the load terms the scene
+  /// enables; @p length_unit: metres per unit of the mesh. Throws
   /// InputError naming the parameter for a bad value.
   void
   parse_registered_parameters(dealii::ParameterHandler &prm,
-                              ForwardParameters        &parameters);
+                              ForwardParameters        &parameters,
+                              const double              length_unit);
 } // namespace RestShape
 
 #endif

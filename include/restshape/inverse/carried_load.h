@@ -37,9 +37,9 @@ namespace RestShape
    * the target X + @p target_shift (the admissible target, owned, m),
    * settles under @p load onto the obstacle, with contact only at the
    * candidates that touch it at the target (ContactProblem::
-   * keep_target_contacts()). Its contact forces, normal to the obstacle at
-   * the target and times @p share, are what the obstacle carries in the
-   * rest shape sought: the direct inverse then finds the rest shape whose
+   * AdmissibleTarget::keep_contacts()). Its contact forces, normal to the
+   * obstacle at the target and times @p share, are what the obstacle carries in
+   * the rest shape sought: the direct inverse then finds the rest shape whose
    * equilibrium at the target has exactly these obstacle forces. Leaves
    * the contact problem reset, every candidate back.
    */

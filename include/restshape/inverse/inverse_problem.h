@@ -125,7 +125,7 @@ namespace RestShape
     /// tolerance.
     bool
     converged(const std::pair<double, double> &errors) const;
-    /// The admissible target (ContactProblem::admissible_target_shift()),
+    /// The admissible target (AdmissibleTarget::shift()),
     /// with its figures in @p result.
     void
     set_admissible_target(InverseResult &result);

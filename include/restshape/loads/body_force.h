@@ -3,6 +3,8 @@
 #ifndef restshape_loads_body_force_h
 #define restshape_loads_body_force_h
 
+#include <restshape/loads/environment_parameters.h>
+#include <restshape/loads/load_registry.h>
 #include <restshape/loads/load_term.h>
 
 namespace RestShape
@@ -11,12 +13,28 @@ namespace RestShape
    * The body force of a LoadState per unit volume of the mesh (target)
    * geometry, whatever the rest shape: the mass is rho dV_mesh (times the
    * mesh's mass ratio, LabelledMesh::mass_ratio()). With Loads/Fluid load =
-   * buoyancy an immersing fluid buoys it by rho_fluid dV_mesh.
+   * buoyancy an immersing fluid buoys it by rho_fluid dV_mesh. Its loads:
+   * "Gravity" (columns: an acceleration, m/s^2, on the buoyed density),
+   * "Tissue body force" (an acceleration on the full density, never
+   * buoyed) and "Drained buoyancy" (an acceleration and a point of the
+   * level above which the tissue has lost its buoyancy).
    */
   class BodyForce : public LoadTerm
   {
   public:
-    explicit BodyForce(const LoadContext &context);
+    static LoadTermInfo
+    info();
+
+    BodyForce(const EnvironmentParameters &environment,
+              const LoadContext           &context);
+
+    void
+    scene_load(LoadState &load) const override;
+    void
+    change_load(const ScenarioChange &change, LoadState &load) const override;
+    std::string
+    change_text(const LoadState &scene,
+                const LoadState &changed) const override;
 
     bool
     has_body_force() const override
@@ -36,9 +54,9 @@ namespace RestShape
                const LoadState                  &load) const override;
 
   private:
-    const LoadParameters &loads;
-    const LabelledMesh   &mesh;
-    const MaterialTable  &materials;
+    const EnvironmentParameters environment;
+    const LabelledMesh         &mesh;
+    const MaterialTable        &materials;
   };
 } // namespace RestShape
 

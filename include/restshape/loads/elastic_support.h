@@ -3,6 +3,7 @@
 #ifndef restshape_loads_elastic_support_h
 #define restshape_loads_elastic_support_h
 
+#include <restshape/loads/load_registry.h>
 #include <restshape/loads/load_term.h>
 
 namespace RestShape
@@ -15,17 +16,28 @@ namespace RestShape
   class ElasticSupport : public LoadTerm
   {
   public:
-    explicit ElasticSupport(const LoadContext &context);
+    /// Boundary conditions/Elastic support stiffness and labels.
+    struct Settings
+    {
+      double stiffness = 0;   // N/m^3: traction (Pa) per m of displacement
+      std::set<Label> labels; // empty: all labels not fully fixed
+    };
+
+    static LoadTermInfo
+    info();
+
+    ElasticSupport(const Settings &settings, const LoadContext &context);
 
     bool
     dead() const override
     {
       return false;
     }
+    /// A support where its stiffness is not zero.
     bool
     is_support() const override
     {
-      return true;
+      return k > 0;
     }
     void
     assemble_faces(const LoadCell &c) const override;

@@ -1,8 +1,9 @@
 // A load term: one external load of the forward problem (a body force, a
 // surface pressure, an elastic support, a traction), with its residual,
-// tangent, potential and resultant. The forward problem's assembly sums
-// the terms; a new load is a class derived from LoadTerm and one line in
-// the registry (load_terms.h).
+// tangent, potential and resultant, its load in the scene and what a
+// scenario changes of it. The forward problem's assembly sums the terms
+// (load_set.h); a new load is a class derived from LoadTerm and one line
+// in the registry (load_registry.h).
 #ifndef restshape_loads_load_term_h
 #define restshape_loads_load_term_h
 
@@ -14,13 +15,14 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <restshape/base/linear_algebra_types.h>
+#include <restshape/base/region.h>
 #include <restshape/fem/local_field.h>
 #include <restshape/fem/simplex_face_values.h>
-#include <restshape/forward/forward_parameters.h>
 #include <restshape/loads/load_state.h>
+#include <restshape/loads/scenario_change.h>
 #include <restshape/material/material_table.h>
 #include <restshape/mesh/labelled_mesh.h>
-#include <restshape/solver/linear_solver.h>
 
 #include <functional>
 #include <memory>
@@ -29,14 +31,11 @@
 
 namespace RestShape
 {
-  /// The assembly's copy of the state d, w (locally relevant entries).
-  using BufferType   = dealii::LinearAlgebra::distributed::Vector<double>;
   using CellIterator = dealii::DoFHandler<3>::active_cell_iterator;
 
-  /// What a load term is built on: the scene and its discretisation.
+  /// What a load term is built on: the mesh and its discretisation.
   struct LoadContext
   {
-    const ForwardParameters     &parameters;
     const LabelledMesh          &mesh;
     const MaterialTable         &materials;
     const dealii::Mapping<3>    &mapping;
@@ -46,11 +45,26 @@ namespace RestShape
     MPI_Comm                     comm;
     /// Whether a DoF is fixed, or a hanging DoF of fixed DoFs only.
     std::function<bool(dealii::types::global_dof_index)> is_held;
+    /// Whether every component of a label is fixed.
+    std::function<bool(Label)> fully_fixed;
+    /// The scenario entries (ScenarioEntry) that some scenario of the run
+    /// sets to a value other than zero.
+    std::set<std::string> set_later;
+    /// Parts of the surface that a term made earlier carries alone (e.g.
+    /// the cavity walls, under their own pressure): the terms made later
+    /// leave them out. Shared by the terms of one LoadSet.
+    std::shared_ptr<std::set<std::string>> claimed_surfaces =
+      std::make_shared<std::set<std::string>>();
 
     /// The labels @p given, or every label of the mesh not fully fixed.
     std::set<Label>
     labels_or_unfixed(const std::set<Label> &given) const;
   };
+
+  class LoadTerm;
+  /// Makes a load term from its parameters' values on a discretisation.
+  using LoadTermFactory =
+    std::function<std::unique_ptr<LoadTerm>(const LoadContext &)>;
 
   /// Call @p f(cell, face) for every boundary face of the locally owned
   /// cells (with @p ghosts: of the owned and ghost cells) of @p labels.
@@ -202,6 +216,39 @@ namespace RestShape
   public:
     virtual ~LoadTerm() = default;
 
+    /// Add the term's load in the scene (its parameters' values, weight 1)
+    /// to @p load.
+    virtual void
+    scene_load(LoadState &) const
+    {}
+    /// A scenario's change of the term's load: @p changed holds the
+    /// scene's load (and the changes of the terms before); change what the
+    /// scenario @p change changes of this term (gravity turned, the fluid
+    /// drained to a level, the values of the term's scenario entries).
+    virtual void
+    change_load(const ScenarioChange &, LoadState &) const
+    {}
+    /// What a scenario's opening of the skull takes off the term's load,
+    /// once every term has changed @p changed.
+    virtual void
+    open_load(const ScenarioChange &, LoadState &) const
+    {}
+    /// "surface pressure 10 -> 0 Pa": how the term's load changed from
+    /// @p scene to @p changed, for the screen; empty if it did not.
+    virtual std::string
+    change_text(const LoadState &, const LoadState &) const
+    {
+      return "";
+    }
+    /// An opening of the skull: the term's faces centred in it change as
+    /// open_load() says (a follower tangent may turn non-symmetric).
+    /// Returns their number (over all ranks). An empty region closes it.
+    virtual unsigned int
+    open(const Region &)
+    {
+      return 0;
+    }
+
     /// Whether its potential is the work of a force that does not depend
     /// on the state (a dead load): the assembly then adds it.
     virtual bool
@@ -243,8 +290,8 @@ namespace RestShape
     {
       return {};
     }
-    /// Whether the term is a support (its resultant a reaction, not an
-    /// applied load).
+    /// Whether the term is a support that holds the body (its resultant a
+    /// reaction, not an applied load).
     virtual bool
     is_support() const
     {

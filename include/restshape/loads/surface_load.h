@@ -6,22 +6,61 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <restshape/loads/load_parameters.h>
 #include <restshape/loads/load_state.h>
+
+#include <vector>
 
 namespace RestShape
 {
+  /**
+   * A fluid's hydrostatic pressure field, weight rho_f max(0, a . (x -
+   * level)) in Pa at x: a (m/s^2) the acceleration it is under, level (m)
+   * a point of its free surface, rho_f the fluid's density.
+   */
+  struct FluidColumn
+  {
+    dealii::Tensor<1, 3> acceleration;
+    dealii::Point<3>     level;
+    double               weight = 1;
+  };
+
+  /**
+   * The pressure loads of a LoadState as the pressure faces carry them:
+   * the uniform pressure (Pa), the fluid's columns, and what an opening of
+   * the skull takes off its faces (the LoadState's loads of the names
+   * SurfaceLoad::pressure_name and the others).
+   */
+  struct PressureField
+  {
+    double                   pressure = 0;
+    std::vector<FluidColumn> fluid;
+    double                   opening_pressure = 0;
+    std::vector<FluidColumn> opening_fluid;
+  };
+
+  /// The names of a surface pressure's loads in a LoadState: the uniform
+  /// pressure (columns: p in Pa), the fluid's pressure (columns:
+  /// acceleration and level), and what an opening takes off of each (empty
+  /// names: none). By default the CSF's (SurfaceLoad::pressure_name ...).
+  struct PressureNames
+  {
+    PressureNames();
+    PressureNames(const std::string &pressure);
+    std::string pressure, fluid, opening_pressure, opening_fluid;
+  };
+
   /**
    * The pressure on the pressure faces (Loads subsection):
    *
    *     p(x) = p0 + sum_k w_k rho_f max(0, a_k . (x - x_k))
    *
-   * with p0 the uniform pressure (LoadState::pressure) and one term per
-   * FluidColumn (LoadState::fluid: weight w_k, acceleration a_k pointing
-   * down, x_k a point of its free surface), rho_f the fluid density when
-   * Fluid load = hydrostatic pressure (else 0). Faces above a column's level
-   * are drained of it. The faces of an opening of the skull carry p(x) less
-   * the opening's part (LoadState::opening_pressure and opening_fluid).
+   * with p0 the uniform pressure (PressureField::pressure) and one term
+   * per FluidColumn (PressureField::fluid: weight w_k, acceleration a_k
+   * pointing down, x_k a point of its free surface), rho_f the fluid
+   * density when Fluid load = hydrostatic pressure (else 0). Faces above a
+   * column's level are drained of it. The faces of an opening of the skull
+   * carry p(x) less the opening's part (PressureField::opening_pressure and
+   * opening_fluid).
    *
    * A follower pressure acts on the current surface: the force on a face
    * element is -p(x) cof(F) N dA (Nanson), F = I + grad d the deformation
@@ -43,9 +82,23 @@ namespace RestShape
       opened
     };
 
+    /// The names of its loads in a LoadState: the uniform pressure
+    /// (columns: p in Pa), the fluid's pressure (columns: acceleration and
+    /// level), and what an opening takes off of each.
+    static const std::string pressure_name, fluid_name, opening_pressure_name,
+      opening_fluid_name;
+
+    /// @p follower: whether the pressure follows the current surface;
+    /// @p fluid_density: kg/m^3 of a hydrostatic fluid (0: none);
     /// @p level: the scene fluid's free surface (m), also the reference
     /// point x_ref of the uniform pressure's potential.
-    SurfaceLoad(const LoadParameters &loads, const dealii::Point<3> &level);
+    SurfaceLoad(const bool              follower,
+                const double            fluid_density,
+                const dealii::Point<3> &level);
+
+    /// The pressure loads of @p load, by @p names.
+    static PressureField
+    field(const LoadState &load, const PressureNames &names = PressureNames());
 
     /// Whether the pressure follows the current surface.
     bool
@@ -55,28 +108,30 @@ namespace RestShape
     }
     /// Whether any pressure acts under @p load.
     bool
-    acts(const LoadState &load) const;
+    acts(const PressureField &load) const;
 
     /// p(x) in Pa at the position @p x (m).
     double
-    pressure(const LoadState        &load,
+    pressure(const PressureField    &load,
              const dealii::Point<3> &x,
              const Face              face = Face::covered) const;
     /// dp/dx in Pa/m.
     dealii::Tensor<1, 3>
-    pressure_gradient(const LoadState        &load,
+    pressure_gradient(const PressureField    &load,
                       const dealii::Point<3> &x,
                       const Face              face = Face::covered) const;
     /// Q(x) (Pa m) with div Q = p: the potential's flux density.
     dealii::Tensor<1, 3>
-    potential_flux(const LoadState        &load,
+    potential_flux(const PressureField    &load,
                    const dealii::Point<3> &x,
                    const Face              face = Face::covered) const;
 
-    /// The scene's fluid under the acceleration @p a: one column through
-    /// the level (none without a hydrostatic fluid).
-    std::vector<FluidColumn>
-    scene_fluid(const dealii::Tensor<1, 3> &a) const;
+    /// The fluid's load (columns of fluid_name) under the acceleration
+    /// @p a with its free surface through @p level: one column (none
+    /// without a hydrostatic fluid or an acceleration).
+    LoadState::Columns
+    fluid_columns(const dealii::Tensor<1, 3> &a,
+                  const dealii::Point<3>     &level) const;
 
     const dealii::Point<3> level;
 

@@ -7,6 +7,7 @@
 
 #include <restshape/base/parameter_parsing.h>
 #include <restshape/base/region.h>
+#include <restshape/loads/load_registry.h>
 #include <restshape/loads/load_term.h>
 
 namespace RestShape
@@ -15,7 +16,7 @@ namespace RestShape
    * Subsection Surface traction: the traction t (Pa, a force per unit
    * area of the mesh geometry's faces, in the mesh's axes) on the
    * boundary faces of its labels whose centres lie in its region. A dead
-   * load: f = t dA, scaled with the load (LoadState::terms).
+   * load: f = t dA, times the weight of its load "Surface traction".
    */
   class SurfaceTraction : public LoadTerm
   {
@@ -27,17 +28,14 @@ namespace RestShape
       Region               region;   // mesh units; none: every face
     };
 
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    /// An empty factory where the traction is zero.
-    static LoadTermFactory
-    parse_parameters(dealii::ParameterHandler &prm);
-    static std::vector<LabelListEntry>
-    label_entries();
+    static LoadTermInfo
+    info();
 
     /// Throws InputError if no face of the labels lies in the region.
     SurfaceTraction(const Settings &settings, const LoadContext &context);
 
+    void
+    scene_load(LoadState &load) const override;
     void
     assemble_faces(const LoadCell &c) const override;
     dealii::Tensor<1, 3>

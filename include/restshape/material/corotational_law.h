@@ -29,6 +29,10 @@ namespace RestShape
   class CorotationalLaw : public MaterialLaw
   {
   public:
+    /// Its name, description and factory for the registry.
+    static LawInfo
+    info();
+
     explicit CorotationalLaw(const LawParameters &parameters);
     CorotationalLaw(const double youngs_modulus, const double poissons_ratio);
 

@@ -14,6 +14,11 @@
 
 namespace RestShape
 {
+  /// "corotational: ...; neo-Hookean: ...": every law's name and
+  /// description, for the help of Materials/Material law.
+  std::string
+  material_law_help();
+
   /// The names of the laws, in the order of registration.
   std::vector<std::string>
   material_law_names();

@@ -4,11 +4,13 @@
 
 #include <deal.II/base/tensor.h>
 
-#include <restshape/fem/discretization_parameters.h>
+#include <restshape/base/tangent_type.h>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace RestShape
 {
@@ -51,7 +53,7 @@ namespace RestShape
    * its tangent A[i][J][k][L] = d P_iJ / d F_kL. Every law is parameterised
    * by Young's modulus and Poisson's ratio, its linearisation at F = I
    * (Lame parameters mu and lambda). Laws are created by name
-   * (material_laws.h) and chosen per label by Materials/Material law.
+   * (law_registry.h) and chosen per label by Materials/Material law.
    */
   class MaterialLaw
   {
@@ -81,6 +83,29 @@ namespace RestShape
     double mu     = 0;
     double lambda = 0;
   };
+
+  /// What the registry (law_registry.h) knows of a law; a law class gives
+  /// it by a static info().
+  struct LawInfo
+  {
+    /// The name Materials/Material law takes ("neo-Hookean").
+    std::string name;
+    /// What it is, for the help of Materials/Material law and the manual:
+    /// its energy and where it serves.
+    std::string description;
+    /// Makes the law for one label.
+    std::function<std::unique_ptr<MaterialLaw>(const LawParameters &)> make;
+    /// Its own parameters (subsection Materials), if any.
+    std::vector<LawParameter> parameters = {};
+  };
+
+  /// The factory of a law class constructed from LawParameters.
+  template <typename Law>
+  std::function<std::unique_ptr<MaterialLaw>(const LawParameters &)>
+  law_factory()
+  {
+    return [](const LawParameters &p) { return std::make_unique<Law>(p); };
+  }
 
   /**
    * Remove the negative eigenvalues of a tangent (as a symmetric 9 x 9

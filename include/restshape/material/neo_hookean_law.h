@@ -23,6 +23,10 @@ namespace RestShape
   class NeoHookeanLaw : public MaterialLaw
   {
   public:
+    /// Its name, description and factory for the registry.
+    static LawInfo
+    info();
+
     explicit NeoHookeanLaw(const LawParameters &parameters);
 
     bool

@@ -25,6 +25,10 @@ namespace RestShape
   class OgdenLaw : public MaterialLaw
   {
   public:
+    /// Its name, description and factory for the registry.
+    static LawInfo
+    info();
+
     /// alpha from the value of Materials/Ogden alpha (-19 if not given).
     explicit OgdenLaw(const LawParameters &parameters);
     /// Materials/Ogden alpha.

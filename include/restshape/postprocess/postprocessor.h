@@ -8,13 +8,19 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/app/parameters.h>
 #include <restshape/contact/contact.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/forward_problem.h>
+#include <restshape/inverse/inverse_parameters.h>
 #include <restshape/io/output.h>
+#include <restshape/io/output_parameters.h>
 #include <restshape/mesh/labelled_mesh.h>
+#include <restshape/mesh/mesh_parameters.h>
 #include <restshape/postprocess/error_estimator.h>
+#include <restshape/postprocess/refinement_parameters.h>
 #include <restshape/postprocess/verification.h>
+#include <restshape/postprocess/verification_parameters.h>
 
 #include <memory>
 #include <vector>
@@ -30,11 +36,11 @@ namespace RestShape
     /// Forces (N): the loads, the fixed supports' reaction, the obstacle,
     /// the elastic support, and the resultant of the surface loads.
     dealii::Tensor<1, 3> external, reaction, contact, support, surface;
-    /// The obstacle's force by label (ContactProblem::force_by_label()).
+    /// The obstacle's force by label (ContactReport::force_by_label()).
     std::map<Label, dealii::Tensor<1, 3>> contact_by_label;
     /// With an obstacle: active nodes that pull (accepted), and the nodes
     /// on fixed crease planes with their largest distance (m) from it.
-    ContactProblem::Adhesion        adhesion;
+    ContactReport::Adhesion         adhesion;
     std::pair<unsigned int, double> fixed_planes{0, 0.};
 
     /// |external + reaction + contact + support| (N).
@@ -46,25 +52,37 @@ namespace RestShape
   };
 
   /// What every postprocessor sees after the solve of a cycle.
+  /// The scene's parameters the postprocessors read (the parts' slices
+  /// of the scene's Parameters, app/parameters.h).
+  struct PostprocessParameters
+  {
+    const MeshParameters         &mesh;
+    const ForwardParameters      &forward;
+    const InverseParameters      &inverse;
+    const RefinementParameters   &refinement;
+    const VerificationParameters &verification;
+    const OutputParameters       &output;
+  };
+
   struct PostprocessInput
   {
-    const Parameters           &parameters;
-    const LabelledMesh         &mesh;
-    ForwardProblem             &forward;
-    ContactProblem             *contact; // nullptr without an obstacle
-    const SolveStatistics      &stats;
-    const unsigned int          cycle;
-    const VectorType           &u; // displacement from the rest shape, owned
-    const SolveReductions      &reductions;
-    const ErrorEstimate        &estimate;
-    const ExactDisplacement    *exact;      // Verification, or nullptr
-    const ExactDisplacement    *exact_rest; // of the rest shape, or nullptr
-    const double                inverse_mean_error; // m (inverse runs)
-    const double                wall_seconds;
-    Summary                    &summary;
-    OutputWriter               &output;
-    dealii::ConditionalOStream &pcout;
-    dealii::TimerOutput        &timer;
+    const PostprocessParameters &parameters;
+    const LabelledMesh          &mesh;
+    ForwardProblem              &forward;
+    ContactProblem              *contact; // nullptr without an obstacle
+    const SolveStatistics       &stats;
+    const unsigned int           cycle;
+    const VectorType            &u; // displacement from the rest shape, owned
+    const SolveReductions       &reductions;
+    const ErrorEstimate         &estimate;
+    const ExactDisplacement     *exact;      // Verification, or nullptr
+    const ExactDisplacement     *exact_rest; // of the rest shape, or nullptr
+    const double                 inverse_mean_error; // m (inverse runs)
+    const double                 wall_seconds;
+    Summary                     &summary;
+    OutputWriter                &output;
+    dealii::ConditionalOStream  &pcout;
+    dealii::TimerOutput         &timer;
   };
 
   class Postprocessor
@@ -92,7 +110,8 @@ namespace RestShape
    * inverse iteration's records).
    */
   std::vector<std::unique_ptr<Postprocessor>>
-  make_postprocessors(const Parameters &parameters, unsigned int &next_step);
+  make_postprocessors(const PostprocessParameters &parameters,
+                      unsigned int                &next_step);
 } // namespace RestShape
 
 #endif

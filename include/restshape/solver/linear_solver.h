@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <restshape/base/linear_algebra_types.h>
 #include <restshape/solver/solver_parameters.h>
 
 #include <memory>
@@ -33,9 +34,6 @@ namespace RestShape
    */
   unsigned int
   match_blas_threads_to_deal_ii();
-
-  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
 
   class SymmetricMumps;
 

@@ -1,14 +1,15 @@
 // Newton's method with line search, inexact linear tolerances and the
 // tangent strategy, inside load stepping, for a NewtonSystem; contact
 // enters through ActiveSetConstraints. Implemented in newton_solver.cc
-// (Newton's steps) and load_stepping.cc (the load steps and their halvings).
+// (Newton's steps) and newton_load_stepping.cc (the load steps and their
+// halvings).
 #ifndef restshape_solver_newton_solver_h
 #define restshape_solver_newton_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <restshape/fem/discretization_parameters.h>
+#include <restshape/base/tangent_type.h>
 #include <restshape/solver/active_set_conditions.h>
 #include <restshape/solver/active_set_constraints.h>
 #include <restshape/solver/linear_solver.h>

@@ -6,7 +6,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <restshape/fem/discretization_parameters.h>
+#include <restshape/base/tangent_type.h>
 #include <restshape/solver/linear_solver.h>
 
 #include <string>

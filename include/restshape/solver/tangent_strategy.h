@@ -4,7 +4,7 @@
 #ifndef restshape_solver_tangent_strategy_h
 #define restshape_solver_tangent_strategy_h
 
-#include <restshape/fem/discretization_parameters.h>
+#include <restshape/base/tangent_type.h>
 
 namespace RestShape
 {

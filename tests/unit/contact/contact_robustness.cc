@@ -51,7 +51,8 @@ namespace
   solve_brain(Scene &s)
   {
     s.add_contact();
-    return s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+    return s.forward->solve(s.forward->loads().scene_load(),
+                            s.forward->discretization().zero_vector());
   }
 
   void
@@ -142,7 +143,8 @@ main(int argc, char **argv)
             // take a step more to reach it).
             " set Linear solver = direct\nend\n");
     const SolveStatistics st =
-      s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+      s.forward->solve(s.forward->loads().scene_load(),
+                       s.forward->discretization().zero_vector());
     const double relative = st.residual / st.reference;
     std::cout << "cantilever refined twice, 1 % of its load: "
               << st.newton_iterations << " Newton steps, |R|/|f| " << relative
@@ -174,7 +176,8 @@ main(int argc, char **argv)
                       " set Side = outside\nend\n");
     ContactProblem &contact = s.add_contact();
     const SolveStatistics st =
-      s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+      s.forward->solve(s.forward->loads().scene_load(),
+                       s.forward->discretization().zero_vector());
     check_between("block on the floor: converged", st.converged, 1, 1);
     // A violation the state does not have: it changes nothing the next
     // round would not see again.

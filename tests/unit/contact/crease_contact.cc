@@ -19,6 +19,8 @@
 
 #include <restshape/base/mpi_start.h>
 #include <restshape/contact/contact.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
 
@@ -137,30 +139,35 @@ main(int argc, char **argv)
               std::to_string(changes) + "\nend\n");
       ContactProblem       &contact = s.add_contact();
       const SolveStatistics stats =
-        s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+        s.forward->solve(s.forward->loads().scene_load(),
+                         s.forward->discretization().zero_vector());
 
       const Tensor<1, 3> weight =
-        s.forward->total_external_force(s.forward->load());
+        total_external_force(*s.forward, s.forward->load());
       const Tensor<1, 3> balance =
-        weight + contact.total_force(s.forward->raw_residual()) +
-        s.forward->support_reaction();
-      const auto [n_fixed, distance] = contact.fixed_plane_nodes();
+        weight + ContactReport(contact).total_force(s.forward->raw_residual()) +
+        support_reaction(*s.forward);
+      const auto [n_fixed, distance] =
+        ContactReport(contact).fixed_plane_nodes();
       sag[changes == 0] =
-        s.forward->nodal_norms(s.forward->displacement()).second;
+        nodal_norms(s.forward->discretization(), s.forward->displacement())
+          .second;
       const std::string tag =
         " (Crease plane changes = " + std::to_string(changes) + ")";
       std::cout << "Crease plane changes = " << changes << ": "
-                << s.forward->dof_handler().n_dofs() << " DoFs ("
-                << s.forward->locally_owned_dofs().n_elements()
+                << s.forward->discretization().dof_handler().n_dofs()
+                << " DoFs ("
+                << s.forward->discretization().locally_owned_dofs().n_elements()
                 << " on this of "
                 << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-                << " ranks), " << contact.n_active() << " active nodes, "
-                << contact.n_held() << " in creases, " << n_fixed
-                << " on fixed planes (up to " << distance * 1e3
-                << " mm off the bowl), " << stats.newton_iterations
-                << " Newton iterations, " << stats.load_steps
-                << " load steps, sag " << sag[changes == 0] * 1e3
-                << " mm, energy " << s.forward->potential_energy() << " J"
+                << " ranks), " << ContactReport(contact).n_active()
+                << " active nodes, " << ContactReport(contact).n_held()
+                << " in creases, " << n_fixed << " on fixed planes (up to "
+                << distance * 1e3 << " mm off the bowl), "
+                << stats.newton_iterations << " Newton iterations, "
+                << stats.load_steps << " load steps, sag "
+                << sag[changes == 0] * 1e3 << " mm, energy "
+                << s.forward->potential_energy() << " J"
                 << (stats.converged ? "" : ": " + stats.failure) << std::endl;
       check_between("converged" + tag, stats.converged, 1, 1);
       const ContactConditions conditions =
@@ -175,8 +182,8 @@ main(int argc, char **argv)
       check_below("distance of fixed-plane nodes off the bowl (mm)" + tag,
                   distance * 1e3,
                   0.05);
-      const ContactProblem::Adhesion adhesion =
-        contact.adhesion(s.forward->raw_residual());
+      const ContactReport::Adhesion adhesion =
+        ContactReport(contact).adhesion(s.forward->raw_residual());
       std::cout << "  " << adhesion.nodes << " active nodes pull, with "
                 << adhesion.fraction << " of the contact force" << std::endl;
       check_below("pull of active nodes over the contact force" + tag,

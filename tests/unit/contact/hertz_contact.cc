@@ -13,6 +13,8 @@
 
 #include <restshape/base/mpi_start.h>
 #include <restshape/contact/contact.h>
+#include <restshape/contact/contact_report.h>
+#include <restshape/forward/forward_results.h>
 #include <restshape/mesh/generated_meshes.h>
 #include <restshape/mesh/gmsh_io.h>
 
@@ -55,26 +57,30 @@ namespace
       "subsection Contact\n set Obstacle file = meshes/floor_large.off\n set Side = outside\nend\n");
     ContactProblem       &contact = s.add_contact();
     const SolveStatistics stats =
-      s.forward->solve(s.forward->scene_load(), s.forward->zero_vector());
+      s.forward->solve(s.forward->loads().scene_load(),
+                       s.forward->discretization().zero_vector());
     std::filesystem::remove(file);
     if (!stats.converged)
       std::cout << "refinements " << refinements
                 << ": not converged: " << stats.failure << std::endl;
 
     Result r;
-    r.newton       = stats.converged ? stats.newton_iterations : 0;
-    r.force        = contact.total_force(s.forward->raw_residual())[2];
-    r.load         = -s.forward->total_external_force(s.forward->load())[2];
+    r.newton = stats.converged ? stats.newton_iterations : 0;
+    r.force  = ContactReport(contact).total_force(s.forward->raw_residual())[2];
+    r.load   = -total_external_force(*s.forward, s.forward->load())[2];
     const double E = 1e4 / (1 - 0.3 * 0.3), R = 0.05;
     r.a_hertz = std::cbrt(3 * r.force * R / (4 * E));
     r.p_hertz = 3 * r.force / (2 * numbers::PI * r.a_hertz * r.a_hertz);
-    r.a_num   = contact.contact_radius(Point<3>(), Tensor<1, 3>({0, 0, 1}));
-    r.p_num   = contact.pressure_range(s.forward->raw_residual()).second;
-    r.pull    = contact.adhesion(s.forward->raw_residual()).fraction;
+    r.a_num   = ContactReport(contact).contact_radius(Point<3>(),
+                                                    Tensor<1, 3>({0, 0, 1}));
+    r.p_num =
+      ContactReport(contact).pressure_range(s.forward->raw_residual()).second;
+    r.pull =
+      ContactReport(contact).adhesion(s.forward->raw_residual()).fraction;
     std::cout << "refinements " << refinements << ": "
-              << s.forward->dof_handler().n_dofs() << " DoFs, "
-              << contact.n_active() << " active nodes, " << r.newton
-              << " Newton iterations; F = " << r.force
+              << s.forward->discretization().dof_handler().n_dofs() << " DoFs, "
+              << ContactReport(contact).n_active() << " active nodes, "
+              << r.newton << " Newton iterations; F = " << r.force
               << " N; a = " << r.a_num * 1e3 << " mm (Hertz " << r.a_hertz * 1e3
               << "), p0 = " << r.p_num << " Pa (Hertz " << r.p_hertz
               << "); pull of active nodes " << r.pull << " of F" << std::endl;

@@ -16,6 +16,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
+#include <restshape/contact/contact_report.h>
 
 #include <algorithm>
 
@@ -53,7 +54,8 @@ namespace
     Scene           s(prm_text(free_updates));
     ContactProblem &contact = s.add_contact();
     ForwardProblem &f       = *s.forward;
-    const auto      stats   = f.solve(f.scene_load(), f.zero_vector());
+    const auto      stats =
+      f.solve(f.loads().scene_load(), f.discretization().zero_vector());
     if (!stats.converged)
       std::cout << name << ": " << stats.failure << std::endl;
     check_between(name + ": converged", stats.converged, 1, 1);
@@ -68,15 +70,17 @@ namespace
     // The buoyed weight (N), carried by the floor: (2000 - 1000) g V_heavy
     // - 1000 g V_end with V = 1e-5 m^2 times 0.09 and 0.01 m.
     const double weight = 9.81 * (1000 * 1e-5 * 0.09 - 1000 * 1e-5 * 0.01);
-    const double force  = contact.total_force(f.raw_residual())[2];
+    const double force =
+      ContactReport(contact).total_force(f.raw_residual())[2];
     check_below(name + ": contact force against the buoyed weight (rel.)",
                 std::abs(force - weight) / weight,
                 1e-8);
 
     // Where it lifts off: the last active node from the clamp's side.
-    const VectorType fields = contact.nodal_fields(f.raw_residual(), 1e3);
-    double           front  = 0;
-    for (const Node &node : f.owned_nodes())
+    const VectorType fields =
+      ContactReport(contact).nodal_fields(f.raw_residual(), 1e3);
+    double front = 0;
+    for (const Node &node : f.discretization().owned_nodes())
       if (fields[node.dofs[0]] > 0.5)
         front = std::max(front, node.position[0]);
     front               = Utilities::MPI::max(front, MPI_COMM_WORLD);

@@ -59,8 +59,8 @@ namespace
   {
     VectorType x = d;
     x.add(s, v);
-    f.set_state(x, f.zero_vector(), f.load());
-    f.evaluate_residual();
+    f.set_state(x, f.discretization().zero_vector(), f.load());
+    f.evaluate();
     return f.potential_energy();
   }
 
@@ -81,9 +81,9 @@ namespace
                            2e-3 * std::cos(70 * X[2]),
                            -1e-3 + 3e-3 * X[1]});
     });
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
-        if (f.is_fixed(node.dofs[c]))
+        if (f.discretization().is_fixed(node.dofs[c]))
           v[node.dofs[c]] = 0;
     v.compress(VectorOperation::insert);
     return v;
@@ -93,25 +93,26 @@ namespace
   check_stationary(const std::string &name, const double gravity)
   {
     Scene           s(prm_text(gravity, 2, 0));
-    ForwardProblem &f     = *s.forward;
-    const auto      stats = f.solve(f.scene_load(), f.zero_vector());
+    ForwardProblem &f = *s.forward;
+    const auto      stats =
+      f.solve(f.loads().scene_load(), f.discretization().zero_vector());
     if (!stats.converged)
       std::cout << name << ": " << stats.failure << std::endl;
     check_between(name + ": converged", stats.converged, 1, 1);
     const double     reported = f.potential_energy();
-    const VectorType d        = f.owned_copy(f.displacement());
+    const VectorType d        = f.discretization().owned_copy(f.displacement());
     double           tip_mm   = 0;
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       tip_mm = std::max(tip_mm, -d[node.dofs[2]] * 1e3);
     std::cout << name << ": tip " << tip_mm << " mm, energy " << reported
               << " J" << std::endl;
 
-    f.evaluate_residual();
+    f.evaluate();
     check_below(name + ": energy after solve() is the final state's (rel.)",
                 std::abs(f.potential_energy() - reported) / std::abs(reported),
                 1e-14);
     const VectorType v  = smooth_field(f);
-    const VectorType d0 = f.zero_vector();
+    const VectorType d0 = f.discretization().zero_vector();
     for (const auto &[direction, field] :
          {std::make_pair(std::string("along the solution"), &d),
           std::make_pair(std::string("along a smooth field"), &v)})
@@ -152,9 +153,9 @@ main(int argc, char **argv)
                             [&](const Point<3> &X) {
                               return (R - I) * Tensor<1, 3>(X);
                             }),
-                f.zero_vector(),
+                f.discretization().zero_vector(),
                 LoadState());
-    f.evaluate_residual();
+    f.evaluate();
     check_below("rigid rotation of the unloaded body: energy (J)",
                 std::abs(f.potential_energy()),
                 1e-15);
@@ -162,8 +163,8 @@ main(int argc, char **argv)
     const VectorType w = nodal_field(f, [](const Point<3> &X) {
       return Tensor<1, 3>({0.1 * X[2], 0.05 * X[0], 0.2 * X[1]});
     });
-    f.set_state(w, w, f.scene_load());
-    f.evaluate_residual();
+    f.set_state(w, w, f.loads().scene_load());
+    f.evaluate();
     check_below("a rest shape under load, before it deforms: energy (J)",
                 std::abs(f.potential_energy()),
                 1e-15);
@@ -177,8 +178,9 @@ main(int argc, char **argv)
     for (int level = 0; level < 2; ++level)
       {
         Scene           s(prm_text(9.81, 1, level));
-        ForwardProblem &f     = *s.forward;
-        const auto      stats = f.solve(f.scene_load(), f.zero_vector());
+        ForwardProblem &f = *s.forward;
+        const auto      stats =
+          f.solve(f.loads().scene_load(), f.discretization().zero_vector());
         check_between("P1 level " + std::to_string(level) + ": converged",
                       stats.converged,
                       1,

@@ -36,7 +36,7 @@ namespace
                  const Field          &field)
   {
     double worst = 0;
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       {
         const Tensor<1, 3> value = field(node.position);
         for (unsigned int c = 0; c < 3; ++c)
@@ -57,7 +57,7 @@ namespace
   {
     ForwardProblem &f = *s.forward;
     f.set_state(nodal_field(f, first), nodal_field(f, second), LoadState());
-    const auto n_before = f.dof_handler().n_dofs();
+    const auto n_before = f.discretization().dof_handler().n_dofs();
     check_below(name + ", before",
                 max_difference(f, f.displacement(), first),
                 1e-12);
@@ -74,10 +74,11 @@ namespace
     });
     f.setup();
     const std::vector<VectorType> out = transfer->interpolate(f);
-    std::cout << name << ": " << n_before << " -> " << f.dof_handler().n_dofs()
-              << " DoFs" << std::endl;
+    std::cout << name << ": " << n_before << " -> "
+              << f.discretization().dof_handler().n_dofs() << " DoFs"
+              << std::endl;
     check_between(name + ", more DoFs after",
-                  f.dof_handler().n_dofs(),
+                  f.discretization().dof_handler().n_dofs(),
                   n_before + 1,
                   1e9);
     if (expect_coarsening)
@@ -194,14 +195,16 @@ main(int argc, char **argv)
                             "Poisson's ratio = 0.3\nend\nsubsection Boundary conditions\n "
                             "set Fixed labels = 2\nend\nsubsection Loads\n set Gravity = 0, "
                             "0, -9.81\nend\n");
-    ForwardProblem       &f         = *s.forward;
-    const LoadState       load      = f.scene_load();
-    const SolveStatistics from_zero = f.solve(load, f.zero_vector());
-    const VectorType      expected  = f.owned_copy(f.displacement());
-    const VectorType      bad =
+    ForwardProblem       &f    = *s.forward;
+    const LoadState       load = f.loads().scene_load();
+    const SolveStatistics from_zero =
+      f.solve(load, f.discretization().zero_vector());
+    const VectorType expected = f.discretization().owned_copy(f.displacement());
+    const VectorType bad =
       nodal_field(f, [](const Point<3> &X) { return -2 * Tensor<1, 3>(X); });
-    const SolveStatistics fallback = f.solve_from(&bad, load, f.zero_vector());
-    VectorType            difference = f.owned_copy(f.displacement());
+    const SolveStatistics fallback =
+      f.solve_from(&bad, load, f.discretization().zero_vector());
+    VectorType difference = f.discretization().owned_copy(f.displacement());
     difference -= expected;
     check_between("solve_from an inverting guess converges",
                   fallback.converged,

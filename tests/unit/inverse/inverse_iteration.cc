@@ -58,8 +58,8 @@ namespace
                            s.pcout,
                            wall);
     Run             r;
-    r.result = inverse.run(s.forward->zero_vector(), 0);
-    r.rest   = s.forward->zero_vector();
+    r.result = inverse.run(s.forward->discretization().zero_vector(), 0);
+    r.rest   = s.forward->discretization().zero_vector();
     r.rest   = s.forward->rest_displacement();
     std::cout << mesh << ", " << acceleration
               << (obstacle.empty() ? "" : ", " + obstacle) << ": "

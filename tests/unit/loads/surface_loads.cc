@@ -16,6 +16,8 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <restshape/base/mpi_start.h>
+#include <restshape/forward/forward_results.h>
+#include <restshape/loads/surface_load.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -84,13 +86,13 @@ namespace
       return Tensor<1, 3>((lambda - 1) * X);
     });
     LoadState        load;
-    load.pressure = p;
-    f.set_state(d, f.zero_vector(), load);
-    f.evaluate_residual();
+    load.set(SurfaceLoad::pressure_name, {{{p}, 1.}});
+    f.set_state(d, f.discretization().zero_vector(), load);
+    f.evaluate();
     // The external force of a node is about p times its area: compare with
     // the pressure's force on the whole ball over the number of nodes.
     const double area_per_node = 4 * M_PI * radius * radius * lambda * lambda /
-                                 (f.owned_nodes().size() / 3.);
+                                 (f.discretization().owned_nodes().size() / 3.);
     return f.raw_residual().linfty_norm() / (std::abs(p) * area_per_node);
   }
 
@@ -141,10 +143,10 @@ namespace
           return Tensor<1, 3>((lambda - 1) * X);
         });
         // Gravity (0, 0, -9.81) and the fluid's column (Loads).
-        LoadState load = f.scene_load();
-        load.pressure  = 250;
-        f.set_state(d, f.zero_vector(), load);
-        const Tensor<1, 3> force = f.surface_force(load);
+        LoadState load = f.loads().scene_load();
+        load.set(SurfaceLoad::pressure_name, {{{250.}, 1.}});
+        f.set_state(d, f.discretization().zero_vector(), load);
+        const Tensor<1, 3> force = surface_force(f, load);
         const double expected = rho_fluid * 9.81 * volume * std::pow(lambda, 3);
         std::cout << "stretch " << lambda << ": surface force " << force
                   << " N, buoyancy " << expected << " N" << std::endl;
@@ -160,31 +162,31 @@ namespace
   double
   tangent_error(ForwardProblem &f)
   {
-    const Tensor2    Q     = rotation(Tensor<1, 3>({0.3, -0.5, 0.2}));
-    const VectorType d     = nodal_field(f, [&](const Point<3> &X) {
+    const Tensor2    Q = rotation(Tensor<1, 3>({0.3, -0.5, 0.2}));
+    const VectorType d = nodal_field(f, [&](const Point<3> &X) {
       const Tensor<1, 3> sheared({X[0] + 0.2 * X[1], X[1], X[2] - 0.1 * X[0]});
       return Tensor<1, 3>(Q * sheared - X);
     });
-    const VectorType v     = nodal_field(f, [](const Point<3> &X) {
+    const VectorType v = nodal_field(f, [](const Point<3> &X) {
       return Tensor<1, 3>(
         {std::sin(60 * X[1]) * 1e-3, std::cos(40 * X[2]) * 1e-3, X[0] * 0.02});
     });
-    LoadState        load  = f.scene_load(); // gravity (0, 0, -9.81), the fluid
-    load.pressure          = 400;
+    LoadState load = f.loads().scene_load(); // gravity (0, 0, -9.81), the fluid
+    load.set(SurfaceLoad::pressure_name, {{{400.}, 1.}});
     const auto residual_at = [&](const double s) {
       VectorType x = d;
       x.add(s, v);
-      f.set_state(x, f.zero_vector(), load);
-      f.evaluate_residual();
-      return f.owned_copy(f.raw_residual());
+      f.set_state(x, f.discretization().zero_vector(), load);
+      f.evaluate();
+      return f.discretization().owned_copy(f.raw_residual());
     };
     const double e  = 1e-6;
     VectorType   fd = residual_at(-e);
     fd -= residual_at(e);
     fd /= 2 * e;
-    f.set_state(d, f.zero_vector(), load);
-    f.evaluate_with_tangent();
-    VectorType Kv = f.zero_vector();
+    f.set_state(d, f.discretization().zero_vector(), load);
+    f.evaluate(true);
+    VectorType Kv = f.discretization().zero_vector();
     f.tangent_matrix().vmult(Kv, v);
     const double norm = Kv.l2_norm();
     Kv -= fd;
@@ -206,7 +208,7 @@ namespace
     const std::string name =
       labels.empty() ? "closed surface" : "open surface, free edges";
     check_between(name + ": tangent symmetric",
-                  s.forward->tangent_is_symmetric(),
+                  s.forward->loads().symmetric(),
                   symmetric,
                   symmetric);
     check_below(name + ": tangent against central differences (rel.)",

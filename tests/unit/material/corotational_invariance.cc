@@ -176,8 +176,9 @@ namespace
     // Rigid rotation of every node about an axis through (0.05, 0, 0) m.
     const Tensor2  R0 = rotation(Tensor<1, 3>({0.2, 0.5, 0.4})); // ~0.67 rad
     const Point<3> center(0.05, 0, 0);
-    VectorType     d = f.zero_vector(), w = f.zero_vector();
-    for (const Node &node : f.owned_nodes())
+    VectorType     d = f.discretization().zero_vector(),
+               w     = f.discretization().zero_vector();
+    for (const Node &node : f.discretization().owned_nodes())
       {
         const Tensor<1, 3> u =
           R0 * (node.position - center) - (node.position - center);
@@ -186,54 +187,54 @@ namespace
       }
     LoadState no_load;
     f.set_state(d, w, no_load);
-    f.evaluate_residual();
+    f.evaluate();
     // Scale: the internal force of a 1 % stretch.
-    VectorType stretch = f.zero_vector();
-    for (const Node &node : f.owned_nodes())
+    VectorType stretch = f.discretization().zero_vector();
+    for (const Node &node : f.discretization().owned_nodes())
       stretch[node.dofs[0]] = 0.01 * node.position[0];
     f.set_state(stretch, w, no_load);
-    f.evaluate_residual();
+    f.evaluate();
     const double scale = f.raw_residual().l2_norm();
     f.set_state(d, w, no_load);
-    f.evaluate_residual();
+    f.evaluate();
     check_below(name + ": |f_int(rigid rotation)| / |f_int(1% stretch)|",
                 f.raw_residual().l2_norm() / scale,
                 1e-10);
 
     // Tangent against central differences of the residual, at a bent and
     // rotated state, along a random direction v (zero at fixed DoFs).
-    VectorType   state = d, v = f.zero_vector();
+    VectorType   state = d, v = f.discretization().zero_vector();
     unsigned int seed   = 1;
     const auto   random = [&seed]() {
       seed = 1103515245u * seed + 12345u;
       return double(seed % 10000) / 10000. - 0.5;
     };
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
         {
           state[node.dofs[c]] += 0.002 * random() * node.position[0] / 0.1;
-          if (!f.is_fixed(node.dofs[c]))
+          if (!f.discretization().is_fixed(node.dofs[c]))
             v[node.dofs[c]] = 1e-3 * random();
         }
     f.set_state(state, w, no_load);
-    f.evaluate_with_tangent();
-    VectorType Kv = f.zero_vector();
+    f.evaluate(true);
+    VectorType Kv = f.discretization().zero_vector();
     f.tangent_matrix().vmult(Kv, v);
     const double h  = 1e-4;
     VectorType   sp = state, sm = state;
     sp.add(h, v);
     sm.add(-h, v);
     f.set_state(sp, w, no_load);
-    f.evaluate_residual();
+    f.evaluate();
     VectorType diff = f.raw_residual();
     f.set_state(sm, w, no_load);
-    f.evaluate_residual();
+    f.evaluate();
     diff -= f.raw_residual();
     diff /= 2 * h; // = -K v at free DoFs
     double error = 0, norm = 0;
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       for (unsigned int c = 0; c < 3; ++c)
-        if (!f.is_fixed(node.dofs[c]))
+        if (!f.discretization().is_fixed(node.dofs[c]))
           {
             error += std::pow(diff[node.dofs[c]] + Kv[node.dofs[c]], 2);
             norm += std::pow(Kv[node.dofs[c]], 2);

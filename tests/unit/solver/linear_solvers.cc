@@ -43,15 +43,16 @@ namespace
         // Half the load, release the solver, then the whole load: the
         // second solve builds the factorisation or AMG again.
         const SolveStatistics half =
-          f.solve(between(LoadState(), f.scene_load(), 0.5), f.zero_vector());
+          f.solve(between(LoadState(), f.loads().scene_load(), 0.5),
+                  f.discretization().zero_vector());
         check_between(cell_type + ", " + solver + ": half load converged",
                       half.converged,
                       1,
                       1);
         f.release_linear_solver();
       }
-    stats        = f.solve(f.scene_load(), f.zero_vector());
-    VectorType d = f.zero_vector();
+    stats = f.solve(f.loads().scene_load(), f.discretization().zero_vector());
+    VectorType d = f.discretization().zero_vector();
     d            = f.displacement();
     return d;
   }

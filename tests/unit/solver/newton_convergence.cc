@@ -43,9 +43,9 @@ namespace
       solver + "end\n");
     ForwardProblem &f = *s.forward;
     Result          r;
-    r.stats  = f.solve(f.scene_load(), f.zero_vector());
+    r.stats = f.solve(f.loads().scene_load(), f.discretization().zero_vector());
     r.tip_mm = 0;
-    for (const Node &node : f.owned_nodes())
+    for (const Node &node : f.discretization().owned_nodes())
       r.tip_mm = std::max(r.tip_mm, -f.displacement()[node.dofs[2]] * 1e3);
     return r;
   }

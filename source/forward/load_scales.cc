@@ -4,7 +4,8 @@
 
 #include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
-#include <restshape/loads/load_scales.h>
+#include <restshape/forward/load_scales.h>
+#include <restshape/loads/surface_load.h>
 
 #include <cstdio>
 #include <limits>
@@ -25,16 +26,14 @@ namespace RestShape
   compute_load_scales(const ForwardProblem &forward)
   {
     const ForwardParameters &prm = forward.scene_parameters();
-    const MPI_Comm     comm = forward.mesh().triangulation().get_communicator();
-    const Tensor<1, 3> gravity = prm.loads.gravity;
-    const Tensor<1, 3> down =
+    const MPI_Comm           comm =
+      forward.discretization().mesh().triangulation().get_communicator();
+    const EnvironmentParameters &environment = prm.environment;
+    const Tensor<1, 3>           gravity     = environment.gravity;
+    const Tensor<1, 3>           down =
       gravity.norm() > 0 ? gravity / gravity.norm() : Tensor<1, 3>();
     const auto fully_fixed = [&](const Label label) {
-      for (const auto &f : prm.boundary.fixed_labels)
-        if (f.label == label && f.components[0] && f.components[1] &&
-            f.components[2])
-          return true;
-      return false;
+      return prm.discretization.fully_fixed(label);
     };
     double   volume = 0, mass = 0, buoyed = 0, E_volume = 0;
     Point<3> low(std::numeric_limits<double>::max(),
@@ -42,13 +41,14 @@ namespace RestShape
                  std::numeric_limits<double>::max());
     Point<3> high = -low;
     double   top = -std::numeric_limits<double>::max(), bottom = -top;
-    for (const auto &cell : forward.dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         forward.discretization().dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const Label  label = cell->material_id();
           const double V     = cell->measure();
           const double rho   = forward.materials().density(label) *
-                             forward.mesh().mass_ratio(*cell);
+                             forward.discretization().mesh().mass_ratio(*cell);
           mass += rho * V;
           if (fully_fixed(label))
             continue;
@@ -56,7 +56,8 @@ namespace RestShape
           // The hydrostatic pressure carries the weight by compressing
           // the tissue: the strain is that of the full weight then.
           buoyed +=
-            (prm.loads.hydrostatic ? rho : rho - prm.loads.fluid_density) * V;
+            (environment.hydrostatic ? rho : rho - environment.fluid_density) *
+            V;
           E_volume += forward.materials().youngs_modulus(label) * V;
           for (const unsigned int v : cell->vertex_indices())
             {
@@ -85,7 +86,9 @@ namespace RestShape
     s.E = E_volume / volume;
     s.gravity_strain =
       std::abs(buoyed / volume) * gravity.norm() * s.height / s.E;
-    s.pressure_strain = std::abs(prm.loads.pressure) / s.E;
+    s.pressure_strain = std::abs(forward.loads().scene_load().weighted(
+                          SurfaceLoad::pressure_name)) /
+                        s.E;
     return s;
   }
 

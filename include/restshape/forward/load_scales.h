@@ -1,7 +1,7 @@
 // What a scene asks of its body, before solving: size, mass and the strains
 // the loads impose.
-#ifndef restshape_loads_load_scales_h
-#define restshape_loads_load_scales_h
+#ifndef restshape_forward_load_scales_h
+#define restshape_forward_load_scales_h
 
 #include <deal.II/base/tensor.h>
 

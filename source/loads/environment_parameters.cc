@@ -1,10 +1,11 @@
-// The parameters of subsection Loads.
+// The parameters of subsection Loads that describe the body's environment:
+// gravity and the immersing fluid.
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/command_line.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_parsing.h>
-#include <restshape/loads/load_parameters.h>
+#include <restshape/loads/environment_parameters.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,7 +16,7 @@ namespace RestShape
   namespace Patterns = dealii::Patterns;
 
   void
-  LoadParameters::declare_parameters(ParameterHandler &prm)
+  EnvironmentParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loads");
     prm.declare_entry("Gravity",
@@ -51,37 +52,15 @@ namespace RestShape
                       "highest point of the pressure faces (the whole "
                       "surface is wetted). Only with Fluid load = "
                       "hydrostatic pressure.");
-    prm.declare_entry("Surface pressure",
-                      "0",
-                      Patterns::Double(),
-                      "Uniform pressure in Pa on the outer surface (e.g. "
-                      "CSF), along the inward normal of the faces; see "
-                      "Pressure load.");
-    prm.declare_entry(
-      "Pressure load",
-      "follower",
-      Patterns::Selection("follower|dead"),
-      "follower: the pressure acts on the current (deformed) surface along "
-      "its current normal, in every solve (a fluid's pressure; Newton uses "
-      "its exact tangent). dead: the same tractions fixed on the faces of "
-      "Mesh/File, whatever the body does (right only where the equilibrium "
-      "is the mesh geometry itself).");
-    prm.declare_entry("Pressure labels",
-                      "",
-                      Patterns::Anything(),
-                      "The pressure acts on the outer faces of cells with "
-                      "these labels; empty: all labels that are not fully "
-                      "fixed.");
     prm.leave_subsection();
   }
 
   void
-  LoadParameters::parse_parameters(ParameterHandler &prm)
+  EnvironmentParameters::parse_parameters(ParameterHandler &prm,
+                                          const double      length_unit)
   {
     prm.enter_subsection("Loads");
     gravity       = parse_vector(prm.get("Gravity"), "Loads/Gravity");
-    pressure      = prm.get_double("Surface pressure");
-    follower      = prm.get("Pressure load") == "follower";
     fluid_density = prm.get_double("Fluid density");
     if (!(fluid_density >= 0))
       throw InputError("",
@@ -102,11 +81,10 @@ namespace RestShape
                            "Loads/Fluid level",
                            "a fluid level needs Fluid load = hydrostatic "
                            "pressure");
-        fluid_level = dealii::Point<3>(
-          parse_vector(prm.get("Fluid level"), "Loads/Fluid level"));
+        fluid_level =
+          dealii::Point<3>(length_unit * parse_vector(prm.get("Fluid level"),
+                                                      "Loads/Fluid level"));
       }
-    pressure_labels =
-      parse_label_set(prm.get("Pressure labels"), "Loads/Pressure labels");
     prm.leave_subsection();
   }
 } // namespace RestShape
