@@ -3,6 +3,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/material/corotational_law.h>
 #include <restshape/material/law_registry.h>
+#include <restshape/material/mooney_rivlin_law.h>
 #include <restshape/material/neo_hookean_law.h>
 #include <restshape/material/ogden_law.h>
 
@@ -19,7 +20,8 @@ namespace RestShape
     {
       static const std::vector<LawInfo> laws = {CorotationalLaw::info(),
                                                 NeoHookeanLaw::info(),
-                                                OgdenLaw::info()};
+                                                OgdenLaw::info(),
+                                                MooneyRivlinLaw::info()};
       return laws;
     }
 

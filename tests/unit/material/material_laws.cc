@@ -14,12 +14,16 @@
 // 5. The Ogden law: alpha = 2 gives the neo-Hookean law (stress and
 //    tangent), uniaxial stretch with nu = 0 against its closed form, the
 //    tangent where stretches coincide (F = I, a uniaxial stretch).
-// 6. An unknown law's name is an error that lists the laws.
+// 6. The Mooney-Rivlin law: r = 0 is the neo-Hookean law; simple shear
+//    against its closed forms (shear stress and both normal stress
+//    differences).
+// 7. An unknown law's name is an error that lists the laws.
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <restshape/material/law_registry.h>
+#include <restshape/material/material_table.h>
 
 #include <cmath>
 
@@ -296,6 +300,64 @@ namespace
                     1e-6);
       }
   }
+  /// The Mooney-Rivlin law: r = 0 is the neo-Hookean law; simple shear
+  /// (isochoric) against its closed forms, the Cauchy shear stress
+  /// mu gamma and the normal stress differences sigma_11 - sigma_22 =
+  /// mu gamma^2 and sigma_22 - sigma_33 = -2 C01 gamma^2 (the second
+  /// invariant's signature; neo-Hookean: 0).
+  void
+  mooney_rivlin_closed_forms()
+  {
+    const LawParameters zero{E, nu, {{"Mooney-Rivlin ratio", 0.}}};
+    const auto          mooney = create_material_law("Mooney-Rivlin", zero);
+    const auto          neo    = create_material_law("neo-Hookean", zero);
+    Tensor2             P_mooney, P_neo;
+    Tensor4             A_mooney, A_neo;
+    for (const double scale : {0.7, 1.0, 1.3})
+      {
+        const Tensor2 F = scale * general_F();
+        mooney->evaluate(F, P_mooney, &A_mooney, TangentType::consistent);
+        neo->evaluate(F, P_neo, &A_neo, TangentType::consistent);
+        check_below("Mooney-Rivlin with r = 0 is neo-Hookean: P, scale " +
+                      std::to_string(scale),
+                    (P_mooney - P_neo).norm() / P_neo.norm(),
+                    1e-12);
+        check_below("Mooney-Rivlin with r = 0 is neo-Hookean: tangent, "
+                    "scale " +
+                      std::to_string(scale),
+                    (A_mooney - A_neo).norm() / A_neo.norm(),
+                    1e-12);
+      }
+    const double r = 0.3;
+    const auto   law =
+      create_material_law("Mooney-Rivlin",
+                          LawParameters{E, nu, {{"Mooney-Rivlin ratio", r}}});
+    const double mu = law->mu, c01 = r * mu / 2;
+    for (const double gamma : {0.1, 0.5, 1.0})
+      {
+        Tensor2 F = unit_symmetric_tensor<3>(), P;
+        F[0][1]   = gamma;
+        law->evaluate(F, P, nullptr, TangentType::consistent);
+        const SymmetricTensor<2, 3> sigma = cauchy_stress(F, P);
+        const std::string g = " (gamma = " + std::to_string(gamma) + ")";
+        check_below("Mooney-Rivlin simple shear: sigma_12 = mu gamma" + g,
+                    std::abs(sigma[0][1] - mu * gamma) / (mu * gamma),
+                    1e-12);
+        check_below("Mooney-Rivlin simple shear: sigma_11 - sigma_22 = mu "
+                    "gamma^2" +
+                      g,
+                    std::abs(sigma[0][0] - sigma[1][1] - mu * gamma * gamma) /
+                      (mu * gamma * gamma),
+                    1e-12);
+        check_below("Mooney-Rivlin simple shear: sigma_22 - sigma_33 = -2 "
+                    "C01 gamma^2" +
+                      g,
+                    std::abs(sigma[1][1] - sigma[2][2] +
+                             2 * c01 * gamma * gamma) /
+                      (c01 * gamma * gamma),
+                    1e-11);
+      }
+  }
 } // namespace
 
 int
@@ -305,6 +367,7 @@ main()
     general_checks(name);
   neo_hookean_closed_forms();
   ogden_closed_forms();
+  mooney_rivlin_closed_forms();
   const std::string error = checks::error_of(
     [] { material_law_index("Mooney", "Materials/Material law"); });
   check_below("an unknown law names the laws: '" + error + "'",
