@@ -280,7 +280,6 @@ namespace RestShape
             f(line);
         }
     };
-    const DoFHandler<3> &dofs_of = context.dof_handler;
     for_each_face(
       [&](const auto &cell, auto f) {
         for_each_edge(cell->face(f),

@@ -91,10 +91,9 @@ namespace RestShape
     for (unsigned int i = 0; i < faces.size(); ++i)
       for (unsigned int k = 0; k + 2 < faces[i].first.size(); k += 3)
         {
-          const std::array<double, 3> x = {faces[i].first[k],
-                                           faces[i].first[k + 1],
-                                           faces[i].first[k + 2]};
-          const auto [it, inserted]     = vertex_face.emplace(x, i);
+          const std::array<double, 3> x = {
+            {faces[i].first[k], faces[i].first[k + 1], faces[i].first[k + 2]}};
+          const auto [it, inserted] = vertex_face.emplace(x, i);
           if (!inserted)
             parent[root(parent, i)] = root(parent, it->second);
         }
