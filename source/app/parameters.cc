@@ -1,6 +1,7 @@
 #include <restshape/app/parameters.h>
 #include <restshape/base/input_error.h>
 #include <restshape/forward/registered_parameters.h>
+#include <restshape/loads/load_registry.h>
 
 namespace RestShape
 {
@@ -23,6 +24,32 @@ namespace RestShape
       const std::vector<LabelListEntry> more    = registered_label_entries();
       entries.insert(entries.end(), more.begin(), more.end());
       return entries;
+    }
+
+    /// Throws InputError if @p scenario gives a load term's entry whose
+    /// scene parameter (ScenarioEntry::needs) is empty.
+    void
+    check_needs(dealii::ParameterHandler &prm,
+                const ScenarioParameters &scenario)
+    {
+      for (const ScenarioEntry &e : load_scenario_entries())
+        {
+          if (e.needs.empty() || !scenario.change.has(e.name))
+            continue;
+          const auto        slash   = e.needs.rfind('/');
+          const std::string section = e.needs.substr(0, slash);
+          prm.enter_subsection(section);
+          const bool empty =
+            dealii::Utilities::trim(prm.get(e.needs.substr(slash + 1))).empty();
+          prm.leave_subsection();
+          if (empty)
+            throw InputError("",
+                             scenario.section() + "/" + e.name,
+                             "the scene leaves " + e.needs +
+                               " empty, so this entry has nothing to "
+                               "change; expected " +
+                               e.needs + " set for the scene too");
+        }
     }
   } // namespace
 
@@ -65,6 +92,7 @@ namespace RestShape
           continue;
         scenario.read_surfaces();
         scenario.check(forward.environment, inverse.enabled);
+        check_needs(prm, scenario);
         // What a scenario sets where the scene has none (a pressure: its
         // follower tangent is then not symmetric from the start).
         for (const auto &[entry, values] : scenario.change.values)

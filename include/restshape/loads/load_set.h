@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 namespace RestShape
@@ -72,14 +73,16 @@ namespace RestShape
     bool
     has_support() const;
 
-    /// The term of type @p Term, or null if the scene has none.
+    /// The term of class @p Term itself (not of a class derived from it:
+    /// find<SurfacePressure>() is never the VentricularPressure), or null
+    /// if the scene has none.
     template <typename Term>
     const Term *
     find() const
     {
       for (const auto &term : terms)
-        if (const auto *t = dynamic_cast<const Term *>(term.get()))
-          return t;
+        if (typeid(*term) == typeid(Term))
+          return static_cast<const Term *>(term.get());
       return nullptr;
     }
 

@@ -25,6 +25,10 @@ namespace RestShape
     std::string  default_value; // "" or "0, 0, 0"
     std::string  help;          // what it changes, its unit
     unsigned int n_values = 1;  // 1 or 3
+    /// The scene's parameter ("Section/Entry") that must be set for the
+    /// entry to act (empty: none); a scenario that gives the entry without
+    /// it is an input error.
+    std::string needs = "";
   };
 
   /**
