@@ -24,3 +24,6 @@ $surf --box -100,-100,-20 --size 200,200,20 --out meshes/floor_large.off
 $surf --box -5,-5,-20 --size 104.5,20,40 --out meshes/cavity_box.off
 $surf --box -5,-5,5 --size 30,30,60 --out meshes/column_cut_box.off
 $surf --box -10,-10,-10 --size 120,30,10 --out meshes/floor_strip.off
+# Lame shell: radii 10 and 20 mm, label 1 a 2 mm inner layer, 4 mm cells
+# (gmsh, seeded; tests/data/lame_shell.prm).
+/usr/bin/python3 meshes/make_shell.py meshes/shell_4mm.msh 10 20 2 4

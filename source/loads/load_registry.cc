@@ -4,13 +4,17 @@
 #include <restshape/loads/load_registry.h>
 #include <restshape/loads/surface_pressure.h>
 #include <restshape/loads/surface_traction.h>
+#include <restshape/loads/ventricular_pressure.h>
 
 namespace RestShape
 {
   const std::vector<LoadTermInfo> &
   load_term_registry()
   {
+    // A cavity's own pressure before the surface pressure: it claims the
+    // cavity walls.
     static const std::vector<LoadTermInfo> terms = {BodyForce::info(),
+                                                    VentricularPressure::info(),
                                                     SurfacePressure::info(),
                                                     ElasticSupport::info(),
                                                     SurfaceTraction::info()};
