@@ -160,6 +160,22 @@ namespace RestShape
   {}
 
   bool
+  CorotationalLaw::evaluate_isochoric(const Tensor2    &F,
+                                      Tensor2          &P,
+                                      Tensor4          *tangent,
+                                      const TangentType type,
+                                      double           *energy) const
+  {
+    // The law with lambda = -2 mu / 3 at the isochoric part J^-1/3 F
+    // (the default's chain rule): mu |S - I|^2 - mu/3 (tr(S - I))^2 of the
+    // isochoric stretch, unchanged by a dilation.
+    CorotationalLaw deviatoric(*this);
+    deviatoric.lambda = -2 * mu / 3;
+    return deviatoric.MaterialLaw::evaluate_isochoric(
+      F, P, tangent, type, energy);
+  }
+
+  bool
   CorotationalLaw::evaluate(const Tensor2    &F,
                             Tensor2          &P,
                             Tensor4          *tangent,

@@ -50,6 +50,17 @@ namespace RestShape
              const TangentType type,
              double           *energy = nullptr) const override;
 
+    /// The deviatoric part mu |S - I|^2 - mu/3 (tr(S - I))^2 (the law with
+    /// lambda = -2 mu/3) of the isochoric stretch S of J^-1/3 F: unchanged
+    /// by a dilation, the volume change being the mixed formulation's
+    /// volumetric().
+    bool
+    evaluate_isochoric(const Tensor2    &F,
+                       Tensor2          &P,
+                       Tensor4          *tangent,
+                       const TangentType type,
+                       double           *energy = nullptr) const override;
+
     /**
      * Subtract from the consistent tangent @p A its negative eigenvalues:
      * those of the rotational ("twist") modes R skew(q_k) of compressed

@@ -79,9 +79,38 @@ namespace RestShape
     double
     energy_density(const Tensor2 &F) const;
 
+    /**
+     * The law's part at constant volume, for the mixed formulation
+     * (Discretization/Formulation = mixed), where the volume change is
+     * volumetric()'s: W_iso(F), unchanged by a dilation (W_iso(a F) =
+     * W_iso(F), a > 0), with its stress P = dW_iso/dF and, if @p tangent
+     * is not null, its derivative. By default the law at the isochoric
+     * part of F, W_iso(F) = W(J^-1/3 F) (for the hyperelastic laws the
+     * terms of ln J vanish there: neo-Hookean mu/2 (J^-2/3 tr C - 3)),
+     * with the chain rule's exact derivatives. false if det F <= 0.
+     */
+    virtual bool
+    evaluate_isochoric(const Tensor2    &F,
+                       Tensor2          &P,
+                       Tensor4          *tangent,
+                       const TangentType type,
+                       double           *energy = nullptr) const;
+
+    /// The volumetric energy of the mixed formulation U(J) = K/2 (ln J)^2
+    /// (J/m^3) and its derivatives dU/dJ (Pa) and d^2U/dJ^2, K the bulk
+    /// modulus.
+    struct Volumetric
+    {
+      double U = 0, dU = 0, d2U = 0;
+    };
+    Volumetric
+    volumetric(const double J) const;
+
     /// Lame parameters of the linearisation at F = I (Pa).
     double mu     = 0;
     double lambda = 0;
+    /// Bulk modulus K = lambda + 2 mu / 3 (Pa).
+    double bulk_modulus = 0;
   };
 
   /// What the registry (law_registry.h) knows of a law; a law class gives

@@ -358,13 +358,106 @@ namespace
                     1e-11);
       }
   }
+
+  /// The isochoric part W_iso(F) of a law and the volumetric U(J) of the
+  /// mixed formulation: exact derivatives (against central differences),
+  /// W_iso unchanged by a dilation and a rotation, and W_iso + U(J) linear
+  /// elasticity with the law's mu and bulk modulus at small strain.
+  void
+  isochoric_checks(const std::string &name)
+  {
+    const auto law   = create_material_law(name, LawParameters{E, nu, {}});
+    const auto W_iso = [&](const Tensor2 &F) {
+      Tensor2 P;
+      double  W = 0;
+      law->evaluate_isochoric(F, P, nullptr, TangentType::consistent, &W);
+      return W;
+    };
+    const auto P_iso = [&](const Tensor2 &F) {
+      Tensor2 P;
+      law->evaluate_isochoric(F, P, nullptr, TangentType::consistent);
+      return P;
+    };
+    constexpr double h = 1e-6;
+    for (const double scale : {1.0, 0.7})
+      {
+        const Tensor2 F = scale * general_F();
+        Tensor2       P;
+        Tensor4       A;
+        law->evaluate_isochoric(F, P, &A, TangentType::consistent);
+        double stress = 0, tangent = 0;
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int L = 0; L < 3; ++L)
+            {
+              Tensor2 Fp = F, Fm = F;
+              Fp[k][L] += h;
+              Fm[k][L] -= h;
+              stress =
+                std::max(stress,
+                         std::abs((W_iso(Fp) - W_iso(Fm)) / (2 * h) - P[k][L]));
+              const Tensor2 dP = (P_iso(Fp) - P_iso(Fm)) / (2 * h);
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int J = 0; J < 3; ++J)
+                  tangent =
+                    std::max(tangent, std::abs(dP[i][J] - A[i][J][k][L]));
+            }
+        const std::string at = " (F scaled by " + std::to_string(scale) + ")";
+        check_below(name + ": isochoric P against differences of W_iso" + at,
+                    stress / P.norm(),
+                    1e-6);
+        check_below(name + ": isochoric tangent against differences of P" + at,
+                    tangent / A.norm(),
+                    1e-6);
+      }
+    const Tensor2 F = general_F();
+    const Tensor2 Q = rotation(0.7, Tensor<1, 3>({1., -2., 0.5}));
+    check_below(name + ": W_iso(a F) = W_iso(F)",
+                std::abs(W_iso(1.3 * F) - W_iso(F)) / W_iso(F),
+                1e-12);
+    check_below(name + ": P_iso(a F) = P_iso(F) / a",
+                (1.3 * P_iso(1.3 * F) - P_iso(F)).norm() / P_iso(F).norm(),
+                1e-12);
+    check_below(name + ": W_iso(Q F) = W_iso(F)",
+                std::abs(W_iso(Q * F) - W_iso(F)) / W_iso(F),
+                1e-12);
+    // Small strain: W_iso + U is linear elasticity with mu and K.
+    const Tensor2 I = unit_symmetric_tensor<3>();
+    Tensor2       H = general_F() - I;
+    H *= 1e-6;
+    const Tensor2 F_small = I + H;
+    const double  J       = determinant(F_small);
+    const Tensor2 P_small =
+      P_iso(F_small) + law->volumetric(J).dU * J * transpose(invert(F_small));
+    const double  K      = law->bulk_modulus;
+    const Tensor2 linear = 2 * law->mu * Tensor2(symmetrize(H)) +
+                           (K - 2 * law->mu / 3) * trace(H) * I;
+    check_below(name + ": W_iso + U(J) at small strain is linear elasticity",
+                (P_small - linear).norm() / linear.norm(),
+                1e-5);
+    check_below(name + ": bulk modulus E / (3 (1 - 2 nu))",
+                std::abs(K - E / (3 * (1 - 2 * nu))) / K,
+                1e-12);
+    for (const double j : {0.8, 1.0, 1.25})
+      {
+        const auto v = law->volumetric(j), vp = law->volumetric(j + h),
+                   vm = law->volumetric(j - h);
+        check_below(name + ": dU/dJ and d2U/dJ2 against differences, J = " +
+                      std::to_string(j),
+                    std::abs((vp.U - vm.U) / (2 * h) - v.dU) / K +
+                      std::abs((vp.dU - vm.dU) / (2 * h) - v.d2U) / K,
+                    1e-6);
+      }
+  }
 } // namespace
 
 int
 main()
 {
   for (const std::string &name : material_law_names())
-    general_checks(name);
+    {
+      general_checks(name);
+      isochoric_checks(name);
+    }
   neo_hookean_closed_forms();
   ogden_closed_forms();
   mooney_rivlin_closed_forms();
