@@ -3,6 +3,8 @@
 #include <restshape/forward/registered_parameters.h>
 #include <restshape/loads/load_registry.h>
 
+#include <algorithm>
+
 namespace RestShape
 {
   namespace
@@ -76,6 +78,12 @@ namespace RestShape
     mesh.parse_parameters(prm);
     forward.parse_parameters(prm, mesh.length_unit);
     parse_registered_parameters(prm, forward, mesh.length_unit);
+    double max_poissons_ratio = -1;
+    for (const auto &[label, nu] : forward.materials.poissons_ratio.listed())
+      max_poissons_ratio = std::max(max_poissons_ratio, nu);
+    forward.discretization.resolve_formulation(max_poissons_ratio,
+                                               mesh.cell_type ==
+                                                 CellType::tetrahedra);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     refinement.parse_parameters(prm);

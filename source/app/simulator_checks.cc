@@ -142,6 +142,9 @@ namespace RestShape
     pcout << scales.text() << std::endl;
     for (const std::string &warning : scales.warnings())
       pcout << "Warning: " << warning << std::endl;
+    const DiscretizationParameters &d = parameters.forward.discretization;
+    if (!d.formulation_warning.empty())
+      pcout << "Warning: " << d.formulation_warning << std::endl;
   }
 
   std::set<Label>

@@ -41,6 +41,21 @@ namespace RestShape
       "the projected tangent. warped: co-rotational law only, R K0 R^T as "
       "in SOFA and Mueller et al. 2002 (no dR term; linear convergence), "
       "kept for comparison; other laws use their exact tangent.");
+    prm.declare_entry(
+      "Formulation",
+      "auto",
+      Patterns::Selection("auto|displacement|mixed"),
+      "How the element carries the volume change. displacement: the "
+      "pointwise J = det F of the displacement element (locks as Poisson's "
+      "ratio nears 0.5: on a thick shell under pressure, P1 at nu = 0.4977 "
+      "moves 0.29 of the exact displacement). mixed: the volumetric energy "
+      "U(J) = K/2 (ln J)^2 (K the bulk modulus) of each cell's mean "
+      "dilatation, the integral of J over the cell's rest volume (a "
+      "pressure constant per cell, condensed: P2-P0 tetrahedra, Q1-P0 and "
+      "Q2-P0 hexahedra), with the law's isochoric part pointwise; not "
+      "available for linear tetrahedra. auto: mixed where some label's "
+      "Poisson's ratio is 0.49 or above and the element has a mixed form, "
+      "else displacement (with a warning at 0.49 and above).");
     prm.leave_subsection();
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Fixed labels",
@@ -68,16 +83,45 @@ namespace RestShape
   DiscretizationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    degree       = prm.get_integer("Polynomial degree");
-    tangent_name = prm.get("Tangent");
-    tangent      = tangent_name == "warped"    ? TangentType::warped :
-                   tangent_name == "projected" ? TangentType::projected :
-                   tangent_name == "adaptive"  ? TangentType::adaptive :
-                                                 TangentType::consistent;
+    degree           = prm.get_integer("Polynomial degree");
+    tangent_name     = prm.get("Tangent");
+    formulation_name = prm.get("Formulation");
+    tangent          = tangent_name == "warped"    ? TangentType::warped :
+                       tangent_name == "projected" ? TangentType::projected :
+                       tangent_name == "adaptive"  ? TangentType::adaptive :
+                                                     TangentType::consistent;
     prm.leave_subsection();
     prm.enter_subsection("Boundary conditions");
     fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
                                       "Boundary conditions/Fixed labels");
     prm.leave_subsection();
+  }
+
+  void
+  DiscretizationParameters::resolve_formulation(const double max_nu,
+                                                const bool   simplex)
+  {
+    const bool available = !(simplex && degree == 1);
+    const bool locking   = max_nu >= nearly_incompressible;
+    if (formulation_name == "mixed" && !available)
+      throw InputError(
+        "",
+        "Discretization/Formulation",
+        "mixed is not available for linear tetrahedra (their mean "
+        "dilatation is the pointwise one); expected Polynomial degree = 2, "
+        "hexahedra, or Formulation = displacement");
+    mixed = formulation_name == "mixed" ||
+            (formulation_name == "auto" && locking && available);
+    formulation_warning.clear();
+    if (locking && !mixed)
+      formulation_warning =
+        "Poisson's ratio " + number_text(max_nu) +
+        " (0.49 or above) with the displacement formulation: the elements "
+        "lock, the body is too stiff and the rest shape wrong (on a thick "
+        "shell under pressure P1 at nu = 0.4977 moves 0.29 of the exact "
+        "displacement); " +
+        (available ? std::string("use Discretization/Formulation = mixed") :
+                     std::string("use Polynomial degree = 2 with "
+                                 "Discretization/Formulation = mixed"));
   }
 } // namespace RestShape

@@ -104,6 +104,7 @@ namespace RestShape
     , rhs(3 * n_scalar)
     , external(3 * n_scalar)
     , magnitude(3 * n_scalar)
+    , volume_gradient(3 * n_scalar)
   {
     AssertThrow(fe.n_base_elements() == 1 && fe.n_components() == 3 &&
                   fe.element_multiplicity(0) == 3,
@@ -139,6 +140,7 @@ namespace RestShape
     first      = true;
     std::fill(rhs.begin(), rhs.end(), 0.);
     std::fill(external.begin(), external.end(), 0.);
+    std::fill(volume_gradient.begin(), volume_gradient.end(), 0.);
     if (magnitudes)
       std::fill(magnitude.begin(), magnitude.end(), 0.);
   }
@@ -149,7 +151,24 @@ namespace RestShape
     add_residual(p);
     if (p.A != nullptr)
       add_tangent(p);
+    if (p.dJ != nullptr)
+      for (unsigned int c = 0; c < 3; ++c)
+        for (unsigned int k = 0; k < n_scalar; ++k)
+          volume_gradient[c * n_scalar + k] +=
+            p.dV_rest *
+            ((*p.dJ)[c][0] * b[k] + (*p.dJ)[c][1] * b[n_scalar + k] +
+             (*p.dJ)[c][2] * b[2 * n_scalar + k]);
     first = false;
+  }
+
+  void
+  ElasticCell::add_volumetric_stiffness(FullMatrix<double> &M,
+                                        const double        factor) const
+  {
+    for (unsigned int r = 0; r < index.size(); ++r)
+      for (unsigned int s = 0; s < index.size(); ++s)
+        M(index[r], index[s]) +=
+          factor * volume_gradient[r] * volume_gradient[s];
   }
 
   void

@@ -146,6 +146,65 @@ namespace RestShape
         }
       return true;
     };
+    // Mixed formulation: the isochoric part of the law at each point, the
+    // volumetric energy V U(J_mean) of the cell's mean dilatation J_mean =
+    // int J dV_rest / V (a condensed pressure U'(J_mean) constant on the
+    // cell), its stiffness U''(J_mean) / V g g^T added below.
+    double     volumetric_factor = 0;
+    const auto add_mixed_points  = [&](const auto &values) {
+      scratch.d_cell.gradients(values, scratch.grad_d);
+      scratch.w_cell.gradients(values, scratch.grad_w);
+      const unsigned int   n = values.n_quadrature_points;
+      std::vector<double>  det_G(n), J(n);
+      std::vector<Tensor2> F(n), G_inv(n);
+      double               V = 0, J_volume = 0;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          const Tensor2 G = I + scratch.grad_w[q];
+          det_G[q]        = determinant(G);
+          G_inv[q]        = invert(G);
+          F[q]            = (I + scratch.grad_d[q]) * G_inv[q];
+          J[q]            = determinant(F[q]);
+          if (!(det_G[q] > 0) || !(J[q] > 0))
+            return false;
+          V += det_G[q] * values.JxW(q);
+          J_volume += J[q] * det_G[q] * values.JxW(q);
+        }
+      const MaterialLaw::Volumetric U = law.volumetric(J_volume / V);
+      volumetric_factor               = U.d2U / V;
+      copy.energy += V * U.U;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          ElasticCell::Point p;
+          if (!law.evaluate_isochoric(
+                F[q], p.P, matrix ? &A : nullptr, tangent_type, &W))
+            return false;
+          const Tensor2 F_inv_T = transpose(invert(F[q]));
+          const Tensor2 dJ      = J[q] * F_inv_T;
+          p.P += U.dU * dJ;
+          if (matrix)
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                for (unsigned int k = 0; k < 3; ++k)
+                  for (unsigned int l = 0; l < 3; ++l)
+                    A[i][j][k][l] += U.dU * (dJ[i][j] * F_inv_T[k][l] -
+                                             dJ[i][l] * F_inv_T[k][j]);
+          p.q       = q;
+          p.G_inv_T = transpose(G_inv[q]);
+          p.A       = matrix ? &A : nullptr;
+          p.dJ      = &dJ;
+          p.JxW     = values.JxW(q);
+          p.dV_rest = det_G[q] * p.JxW;
+          p.f_body  = varies ? load_set.body_force(*cell,
+                                                  values.quadrature_point(q),
+                                                  current_load) :
+                                cell_body_force;
+          copy.energy += W * p.dV_rest;
+          elastic.add(values, p);
+        }
+      return true;
+    };
+    const bool mixed = parameters.discretization.mixed;
     // As a cell of the mesh: the DoFHandler's cell is of the vector element.
     const Triangulation<3>::cell_iterator mesh_cell = cell;
     Point<3>                              center;
@@ -161,8 +220,10 @@ namespace RestShape
       }
     cell_body_force  = load_set.body_force(*cell, center, current_load);
     const bool valid = scratch.simplex != nullptr ?
-                         add_points(*scratch.simplex) :
-                         add_points(scratch.fe_values);
+                         (mixed ? add_mixed_points(*scratch.simplex) :
+                                  add_points(*scratch.simplex)) :
+                         (mixed ? add_mixed_points(scratch.fe_values) :
+                                  add_points(scratch.fe_values));
     if (!valid)
       {
         copy.valid  = false;
@@ -172,7 +233,11 @@ namespace RestShape
       }
     elastic.vectors(copy.cell_rhs, copy.cell_external, copy.cell_magnitude);
     if (matrix)
-      elastic.matrix(copy.cell_matrix);
+      {
+        elastic.matrix(copy.cell_matrix);
+        if (mixed)
+          elastic.add_volumetric_stiffness(copy.cell_matrix, volumetric_factor);
+      }
 
     load_set.assemble_faces({cell,
                              scratch.d_cell,

@@ -93,6 +93,8 @@ namespace RestShape
                 std::string(in.mesh.is_simplex() ? "tetrahedra" : "hexahedra"));
     summary.set("polynomial_degree", long(p.forward.discretization.degree));
     summary.set("tangent", p.forward.discretization.tangent_name);
+    summary.set("formulation",
+                p.forward.discretization.mixed ? "mixed" : "displacement");
     summary.set("n_cells",
                 long(in.mesh.triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(r.n_nodes));

@@ -20,6 +20,23 @@ namespace RestShape
     std::string  tangent_name; // as in the .prm, for summary.json
     /// Boundary conditions/Fixed labels.
     std::vector<FixedLabel> fixed_labels;
+    /// Discretization/Formulation as written (auto|displacement|mixed).
+    std::string formulation_name = "auto";
+    /// After resolve_formulation(): whether the volume change is the
+    /// cell's mean dilatation (mixed) or the pointwise one.
+    bool mixed = false;
+    /// After resolve_formulation(): what the run says about the choice
+    /// (empty: nothing to say).
+    std::string formulation_warning;
+
+    /// Resolve Formulation = auto (mixed where @p max_poissons_ratio is
+    /// nearly_incompressible or above and the element has a mixed form)
+    /// and check an explicit choice; @p simplex: tetrahedra. Throws
+    /// InputError for mixed on linear tetrahedra.
+    void
+    resolve_formulation(const double max_poissons_ratio, const bool simplex);
+    /// From this Poisson's ratio on, displacement elements lock.
+    static constexpr double nearly_incompressible = 0.49;
 
     /// Whether every component of @p label is fixed.
     bool

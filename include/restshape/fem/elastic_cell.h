@@ -36,6 +36,10 @@ namespace RestShape
       double                      JxW;     // mesh volume weight (m^3)
       double                      dV_rest; // rest volume weight (m^3)
       dealii::Tensor<1, 3>        f_body;  // body force (N/m^3 of mesh)
+      /// Mixed formulation: J F^-T = dJ/dF at the point, whose integral
+      /// against the shape functions is the gradient of the cell's volume
+      /// (null: displacement formulation).
+      const dealii::Tensor<2, 3> *dJ = nullptr;
     };
 
     /// Start a cell; @p magnitudes: also sum |f_ext| + |f_int|.
@@ -72,6 +76,14 @@ namespace RestShape
     void
     matrix(dealii::FullMatrix<double> &matrix) const;
 
+    /// Mixed formulation: add @p factor g g^T to @p matrix (after
+    /// matrix()), g the cell's integral of dJ against the shape functions
+    /// (the derivative of its current volume): the stiffness of its mean
+    /// dilatation, factor = U''(J_mean) / V_rest.
+    void
+    add_volumetric_stiffness(dealii::FullMatrix<double> &matrix,
+                             const double                factor) const;
+
   private:
     /// The point's terms, with b and phi set.
     void
@@ -101,6 +113,8 @@ namespace RestShape
     std::vector<std::pair<unsigned int, unsigned int>> copies;
     /// By (component c, scalar k), c * n_scalar + k.
     std::vector<double> rhs, external, magnitude;
+    /// By (component c, scalar k): the integral of dJ (Point::dJ).
+    std::vector<double> volume_gradient;
   };
 } // namespace RestShape
 

@@ -1,0 +1,56 @@
+#!/bin/bash
+# Locking on the Lame shell (tests/data/lame_shell.prm, 4 mm cells, 1 Pa in
+# the cavity, tests/check_lame_shell.py): P2 tetrahedra with the
+# displacement formulation at nu = 0.3 set the accuracy the element has
+# on this mesh; at nu = 0.4999 and 0.49999 the mixed formulation
+# (Discretization/Formulation = mixed, P2-P0) must reach it within 10 %
+# of the RMS error, and its cavity within 2 % of the exact displacement
+# ratio of nu = 0.3; Formulation = auto chooses mixed there (summary.json)
+# and gives the same nodes; the displacement formulation at 0.4999 warns.
+# usage: run_lame_locking.sh RESTSHAPE OUTPUT_DIRECTORY
+set -eu
+exe=$1
+out=$2
+here=$(dirname "$0")
+prm=$here/data/lame_shell.prm
+rm -rf "$out"
+mkdir -p "$out"
+run() {
+  local name=$1 nu=$2
+  shift 2
+  "$exe" --set "Output/Directory=$out/$name" --set "Discretization/Polynomial degree=2" \
+    --set "Materials/Poisson's ratio=$nu" "$@" "$prm" >"$out/$name.log" 2>&1 ||
+    { echo "FAIL: $name: exit $?"; tail -n 3 "$out/$name.log"; exit 1; }
+}
+# figures NAME NU: "RMS CAVITY" of the run against the closed form.
+figures() {
+  /usr/bin/python3 "$here/check_lame_shell.py" "$out/$1/nodes.csv" --E 3000 \
+    --nu "$2" --p-inner 1 --support 1e3 --label "$1" | tee -a "$out/figures.txt" |
+    sed -E 's/.*displacement ([0-9.]+) %.*exact ([0-9.]+).*/\1 \2/'
+}
+run displacement_0.3 0.3 --set Discretization/Formulation=displacement
+read -r rms_ref cavity_ref < <(figures displacement_0.3 0.3)
+run displacement_0.4999 0.4999 --set Discretization/Formulation=displacement
+figures displacement_0.4999 0.4999 >/dev/null
+grep -q "Warning: Poisson's ratio 0.4999 (0.49 or above) with the displacement formulation" \
+  "$out/displacement_0.4999.log" || { echo "FAIL: no locking warning"; exit 1; }
+fail=0
+for nu in 0.4999 0.49999; do
+  run mixed_$nu $nu --set Discretization/Formulation=mixed
+  read -r rms cavity < <(figures mixed_$nu $nu)
+  if awk -v r="$rms" -v r0="$rms_ref" -v c="$cavity" -v c0="$cavity_ref" \
+    'BEGIN { exit !(r <= 1.1 * r0 && c >= c0 - 0.02 && c <= c0 + 0.02) }'; then
+    echo "ok: mixed at nu = $nu: RMS $rms % (P2 at 0.3: $rms_ref %), cavity $cavity ($cavity_ref)"
+  else
+    echo "FAIL: mixed at nu = $nu: RMS $rms % against $rms_ref % at 0.3, cavity $cavity against $cavity_ref"
+    fail=1
+  fi
+done
+run auto_0.4999 0.4999
+grep -q '"formulation": "mixed"' "$out/auto_0.4999/summary.json" ||
+  { echo "FAIL: auto did not choose mixed at 0.4999"; exit 1; }
+numdiff -q -r 1e-9 -a 1e-12 "$out/mixed_0.4999/nodes.csv" "$out/auto_0.4999/nodes.csv" ||
+  { echo "FAIL: auto differs from mixed"; exit 1; }
+echo "ok: auto chooses mixed at 0.4999"
+cat "$out/figures.txt"
+exit $fail
