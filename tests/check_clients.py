@@ -9,7 +9,8 @@ every rest_shape.msh with gmsh's reader (python3-gmsh) and with meshio
   tetrahedron 24, hexahedron 12, Lagrange hexahedron 72); the distinct
   points of the final state are the mesh's nodes (n_nodes); every array
   has one tuple per point (point data) or per cell (cell data); `label` is
-  Int32 cell data, `von_mises_Pa` Float64 cell data; the displacement
+  Int32 cell data, `von_mises_Pa`, `pressure_Pa` and `volume_ratio`
+  Float64 cell data; the displacement
   field exists and is finite; contact runs carry the contact fields,
   inverse runs the error and shape fields, runs with an error estimate
   the `estimated_error` cell field.
@@ -71,7 +72,7 @@ def array_names(data):
 def expected_fields(summary, unit):
     """(point arrays, cell arrays) every state of this run must carry."""
     points = {'displacement_' + unit}
-    cells = {'label', 'von_mises_Pa'}
+    cells = {'label', 'von_mises_Pa', 'pressure_Pa', 'volume_ratio'}
     if 'active_contact_nodes' in summary:
         points |= {'contact_active', 'contact_gap_' + unit,
                    'contact_pressure_Pa'}

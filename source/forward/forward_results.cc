@@ -102,16 +102,65 @@ namespace RestShape
           fe_values[u].get_function_gradients(forward.rest_displacement(),
                                               grad_w);
           const MaterialLaw &law = forward.materials().law(cell->material_id());
-          double             sum = 0, volume = 0;
+          const bool mixed = forward.scene_parameters().discretization.mixed;
+          double     sum = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const Tensor2 F = (I + grad_d[q]) * invert(I + grad_w[q]);
               Tensor2       P;
-              if (law.evaluate(F, P, nullptr, TangentType::warped))
+              // The mixed pressure is isotropic: no part of von Mises.
+              if (mixed ?
+                    law.evaluate_isochoric(F, P, nullptr, TangentType::warped) :
+                    law.evaluate(F, P, nullptr, TangentType::warped))
                 sum += von_mises(cauchy_stress(F, P)) * fe_values.JxW(q);
               volume += fe_values.JxW(q);
             }
           result[cell->active_cell_index()] = sum / volume;
+        }
+    return result;
+  }
+
+  VolumeFields
+  volume_fields(const ForwardProblem &forward)
+  {
+    const unsigned int n =
+      forward.discretization().mesh().triangulation().n_active_cells();
+    VolumeFields         result{Vector<float>(n), Vector<float>(n)};
+    FEValues<3>          fe_values(forward.discretization().mapping(),
+                          forward.discretization().fe(),
+                          forward.discretization().quadrature(),
+                          update_gradients | update_JxW_values);
+    const unsigned int   n_q = forward.discretization().quadrature().size();
+    std::vector<Tensor2> grad_d(n_q), grad_w(n_q);
+    const FEValuesExtractors::Vector u(0);
+    const Tensor2                    I = unit_symmetric_tensor<3>();
+    const bool mixed = forward.scene_parameters().discretization.mixed;
+    for (const auto &cell :
+         forward.discretization().dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_gradients(forward.displacement(), grad_d);
+          fe_values[u].get_function_gradients(forward.rest_displacement(),
+                                              grad_w);
+          const MaterialLaw &law = forward.materials().law(cell->material_id());
+          double             rest = 0, current = 0, pressure = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const Tensor2 G  = I + grad_w[q];
+              const Tensor2 F  = (I + grad_d[q]) * invert(G);
+              const double  dV = determinant(G) * fe_values.JxW(q);
+              const double  J  = determinant(F);
+              Tensor2       P;
+              rest += dV;
+              current += J * dV;
+              if (!mixed && law.evaluate(F, P, nullptr, TangentType::warped))
+                pressure -= trace(cauchy_stress(F, P)) / 3 * dV;
+            }
+          const unsigned int i   = cell->active_cell_index();
+          result.volume_ratio[i] = current / rest;
+          result.pressure[i] =
+            mixed ? -law.volumetric(current / rest).dU : pressure / rest;
         }
     return result;
   }

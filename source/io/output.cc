@@ -63,12 +63,15 @@ namespace RestShape
                               .get_triangulation()
                               .get_communicator();
       std::vector<VtuCellArray> arrays = {{"label", true, {}},
-                                          {"von_mises_Pa", false, {}}};
+                                          {"von_mises_Pa", false, {}},
+                                          {"pressure_Pa", false, {}},
+                                          {"volume_ratio", false, {}}};
       if (Utilities::MPI::n_mpi_processes(comm) > 1)
         arrays.push_back({"subdomain", true, {}});
       for (const CellField &f : extra)
         arrays.push_back({f.name, false, {}});
       const Vector<float> stress = von_mises_stress(problem);
+      const VolumeFields  volume = volume_fields(problem);
       for (const auto &cell :
            problem.discretization().dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
@@ -76,8 +79,10 @@ namespace RestShape
             const unsigned int i = cell->active_cell_index();
             arrays[0].values.push_back(cell->material_id());
             arrays[1].values.push_back(stress[i]);
-            unsigned int a = 2;
-            if (arrays.size() > 2 + extra.size())
+            arrays[2].values.push_back(volume.pressure[i]);
+            arrays[3].values.push_back(volume.volume_ratio[i]);
+            unsigned int a = 4;
+            if (arrays.size() > 4 + extra.size())
               arrays[a++].values.push_back(cell->subdomain_id());
             for (const CellField &f : extra)
               arrays[a++].values.push_back(f.values[i]);

@@ -39,6 +39,18 @@ namespace RestShape
   dealii::Vector<float>
   von_mises_stress(const ForwardProblem &forward);
 
+  /// Per active cell (zero on cells not owned here): its volume ratio
+  /// J_mean, current over rest volume, and its pressure (Pa, positive in
+  /// compression): -U'(J_mean) in the mixed formulation (the condensed
+  /// pressure), the element average of -tr(sigma)/3 in the displacement
+  /// formulation.
+  struct VolumeFields
+  {
+    dealii::Vector<float> volume_ratio, pressure;
+  };
+  VolumeFields
+  volume_fields(const ForwardProblem &forward);
+
   /// The smallest det F (volume ratio of the current state to the rest
   /// shape) over all quadrature points, and where ("label 1 at (x, y, z)
   /// mm of the mesh").
