@@ -30,6 +30,9 @@ namespace RestShape
                     update_quadrature_points)
       , grad_d(quadrature.size())
       , grad_w(quadrature.size())
+      , F(quadrature.size())
+      , G_inv(quadrature.size())
+      , det_G(quadrature.size())
       , d_cell(fe)
       , w_cell(fe)
       , faces(mapping, fe, face_quadrature)
@@ -52,6 +55,8 @@ namespace RestShape
 
     FEValues<3>                    fe_values; // of the scalar base element
     std::vector<Tensor2>           grad_d, grad_w;
+    std::vector<Tensor2>           F, G_inv; // per point: F, (dX_rest/dX)^-1
+    std::vector<double>            det_G;    // per point: dV_rest / dV
     LocalField                     d_cell, w_cell; // d and w on the cell
     FaceScratch                    faces;          // of the load terms
     ElasticCell                    elastic;        // the law's terms
@@ -117,94 +122,81 @@ namespace RestShape
     double  W   = 0;
     copy.energy = 0;
     // The law's terms at the points of @p values (of the scalar element,
-    // on this cell); false at an inverted point.
-    const auto add_points = [&](const auto &values) {
+    // on this cell); false at an inverted point. Mixed formulation: the
+    // isochoric part of the law at each point and the volumetric energy
+    // V U(J_mean) of the cell's mean dilatation J_mean = int J dV_rest / V
+    // (a condensed pressure U'(J_mean) constant on the cell), its
+    // stiffness U''(J_mean) / V g g^T added below.
+    const bool mixed             = parameters.discretization.mixed;
+    double     volumetric_factor = 0;
+    const auto add_points        = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
-      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+      const unsigned int n = values.n_quadrature_points;
+      double             V = 0, J_volume = 0;
+      for (unsigned int q = 0; q < n; ++q)
         {
           // Rest configuration X_rest = X + w: dX_rest = G dX.
-          const Tensor2      G     = I + scratch.grad_w[q];
-          const double       det_G = determinant(G);
-          const Tensor2      G_inv = invert(G);
-          const Tensor2      F     = (I + scratch.grad_d[q]) * G_inv;
-          ElasticCell::Point p;
-          if (!(det_G > 0) ||
-              !law.evaluate(F, p.P, matrix ? &A : nullptr, tangent_type, &W))
+          const Tensor2 G  = I + scratch.grad_w[q];
+          scratch.det_G[q] = determinant(G);
+          scratch.G_inv[q] = invert(G);
+          scratch.F[q]     = (I + scratch.grad_d[q]) * scratch.G_inv[q];
+          if (!(scratch.det_G[q] > 0))
             return false;
+          if (mixed)
+            {
+              const double J = determinant(scratch.F[q]);
+              if (!(J > 0))
+                return false;
+              V += scratch.det_G[q] * values.JxW(q);
+              J_volume += J * scratch.det_G[q] * values.JxW(q);
+            }
+        }
+      MaterialLaw::Volumetric U;
+      if (mixed)
+        {
+          U                 = law.volumetric(J_volume / V);
+          volumetric_factor = U.d2U / V;
+          copy.energy += V * U.U;
+        }
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          const Tensor2     &F = scratch.F[q];
+          ElasticCell::Point p;
+          Tensor2            dJ;
+          if (!(mixed ? law.evaluate_isochoric(
+                          F, p.P, matrix ? &A : nullptr, tangent_type, &W) :
+                               law.evaluate(
+                          F, p.P, matrix ? &A : nullptr, tangent_type, &W)))
+            return false;
+          if (mixed)
+            {
+              const Tensor2 F_inv_T = transpose(invert(F));
+              dJ                    = determinant(F) * F_inv_T;
+              p.P += U.dU * dJ;
+              if (matrix)
+                for (unsigned int i = 0; i < 3; ++i)
+                  for (unsigned int j = 0; j < 3; ++j)
+                    for (unsigned int k = 0; k < 3; ++k)
+                      for (unsigned int l = 0; l < 3; ++l)
+                        A[i][j][k][l] += U.dU * (dJ[i][j] * F_inv_T[k][l] -
+                                                 dJ[i][l] * F_inv_T[k][j]);
+              p.dJ = &dJ;
+            }
           p.q       = q;
-          p.G_inv_T = transpose(G_inv);
+          p.G_inv_T = transpose(scratch.G_inv[q]);
           p.A       = matrix ? &A : nullptr;
           p.JxW     = values.JxW(q);
-          p.dV_rest = det_G * p.JxW;
+          p.dV_rest = scratch.det_G[q] * p.JxW;
           p.f_body  = varies ? load_set.body_force(*cell,
                                                   values.quadrature_point(q),
                                                   current_load) :
-                               cell_body_force;
+                                      cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
       return true;
     };
-    // Mixed formulation: the isochoric part of the law at each point, the
-    // volumetric energy V U(J_mean) of the cell's mean dilatation J_mean =
-    // int J dV_rest / V (a condensed pressure U'(J_mean) constant on the
-    // cell), its stiffness U''(J_mean) / V g g^T added below.
-    double     volumetric_factor = 0;
-    const auto add_mixed_points  = [&](const auto &values) {
-      scratch.d_cell.gradients(values, scratch.grad_d);
-      scratch.w_cell.gradients(values, scratch.grad_w);
-      const unsigned int   n = values.n_quadrature_points;
-      std::vector<double>  det_G(n), J(n);
-      std::vector<Tensor2> F(n), G_inv(n);
-      double               V = 0, J_volume = 0;
-      for (unsigned int q = 0; q < n; ++q)
-        {
-          const Tensor2 G = I + scratch.grad_w[q];
-          det_G[q]        = determinant(G);
-          G_inv[q]        = invert(G);
-          F[q]            = (I + scratch.grad_d[q]) * G_inv[q];
-          J[q]            = determinant(F[q]);
-          if (!(det_G[q] > 0) || !(J[q] > 0))
-            return false;
-          V += det_G[q] * values.JxW(q);
-          J_volume += J[q] * det_G[q] * values.JxW(q);
-        }
-      const MaterialLaw::Volumetric U = law.volumetric(J_volume / V);
-      volumetric_factor               = U.d2U / V;
-      copy.energy += V * U.U;
-      for (unsigned int q = 0; q < n; ++q)
-        {
-          ElasticCell::Point p;
-          if (!law.evaluate_isochoric(
-                F[q], p.P, matrix ? &A : nullptr, tangent_type, &W))
-            return false;
-          const Tensor2 F_inv_T = transpose(invert(F[q]));
-          const Tensor2 dJ      = J[q] * F_inv_T;
-          p.P += U.dU * dJ;
-          if (matrix)
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                for (unsigned int k = 0; k < 3; ++k)
-                  for (unsigned int l = 0; l < 3; ++l)
-                    A[i][j][k][l] += U.dU * (dJ[i][j] * F_inv_T[k][l] -
-                                             dJ[i][l] * F_inv_T[k][j]);
-          p.q       = q;
-          p.G_inv_T = transpose(G_inv[q]);
-          p.A       = matrix ? &A : nullptr;
-          p.dJ      = &dJ;
-          p.JxW     = values.JxW(q);
-          p.dV_rest = det_G[q] * p.JxW;
-          p.f_body  = varies ? load_set.body_force(*cell,
-                                                  values.quadrature_point(q),
-                                                  current_load) :
-                                cell_body_force;
-          copy.energy += W * p.dV_rest;
-          elastic.add(values, p);
-        }
-      return true;
-    };
-    const bool mixed = parameters.discretization.mixed;
     // As a cell of the mesh: the DoFHandler's cell is of the vector element.
     const Triangulation<3>::cell_iterator mesh_cell = cell;
     Point<3>                              center;
@@ -220,10 +212,8 @@ namespace RestShape
       }
     cell_body_force  = load_set.body_force(*cell, center, current_load);
     const bool valid = scratch.simplex != nullptr ?
-                         (mixed ? add_mixed_points(*scratch.simplex) :
-                                  add_points(*scratch.simplex)) :
-                         (mixed ? add_mixed_points(scratch.fe_values) :
-                                  add_points(scratch.fe_values));
+                         add_points(*scratch.simplex) :
+                         add_points(scratch.fe_values);
     if (!valid)
       {
         copy.valid  = false;

@@ -9,6 +9,37 @@ namespace RestShape
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Call @p f(cell, fe_values, grad_d, grad_w) for every locally owned
+    /// cell: the FEValues (with @p flags and gradients) on it and the
+    /// gradients of the displacement and the rest shift at its points.
+    template <typename Function>
+    void
+    for_each_owned_cell_gradients(const ForwardProblem &forward,
+                                  const UpdateFlags     flags,
+                                  Function            &&f)
+    {
+      FEValues<3>          fe_values(forward.discretization().mapping(),
+                            forward.discretization().fe(),
+                            forward.discretization().quadrature(),
+                            flags | update_gradients);
+      const unsigned int   n_q = forward.discretization().quadrature().size();
+      std::vector<Tensor2> grad_d(n_q), grad_w(n_q);
+      const FEValuesExtractors::Vector u(0);
+      for (const auto &cell :
+           forward.discretization().dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[u].get_function_gradients(forward.displacement(), grad_d);
+            fe_values[u].get_function_gradients(forward.rest_displacement(),
+                                                grad_w);
+            f(cell, fe_values, grad_d, grad_w);
+          }
+    }
+  } // namespace
+
   std::pair<double, double>
   distance_to(const ForwardProblem        &forward,
               const std::vector<Point<3>> &targets)
@@ -85,38 +116,30 @@ namespace RestShape
   {
     Vector<float> result(
       forward.discretization().mesh().triangulation().n_active_cells());
-    FEValues<3>          fe_values(forward.discretization().mapping(),
-                          forward.discretization().fe(),
-                          forward.discretization().quadrature(),
-                          update_gradients | update_JxW_values);
-    std::vector<Tensor2> grad_d(forward.discretization().quadrature().size()),
-      grad_w(forward.discretization().quadrature().size());
-    const FEValuesExtractors::Vector u(0);
-    const Tensor2                    I = unit_symmetric_tensor<3>();
-    for (const auto &cell :
-         forward.discretization().dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[u].get_function_gradients(forward.displacement(), grad_d);
-          fe_values[u].get_function_gradients(forward.rest_displacement(),
-                                              grad_w);
-          const MaterialLaw &law = forward.materials().law(cell->material_id());
-          const bool mixed = forward.scene_parameters().discretization.mixed;
-          double     sum = 0, volume = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const Tensor2 F = (I + grad_d[q]) * invert(I + grad_w[q]);
-              Tensor2       P;
-              // The mixed pressure is isotropic: no part of von Mises.
-              if (mixed ?
-                    law.evaluate_isochoric(F, P, nullptr, TangentType::warped) :
-                    law.evaluate(F, P, nullptr, TangentType::warped))
-                sum += von_mises(cauchy_stress(F, P)) * fe_values.JxW(q);
-              volume += fe_values.JxW(q);
-            }
-          result[cell->active_cell_index()] = sum / volume;
-        }
+    const Tensor2 I     = unit_symmetric_tensor<3>();
+    const bool    mixed = forward.scene_parameters().discretization.mixed;
+    for_each_owned_cell_gradients(
+      forward,
+      update_JxW_values,
+      [&](const auto &cell,
+          const auto &fe_values,
+          const auto &grad_d,
+          const auto &grad_w) {
+        const MaterialLaw &law = forward.materials().law(cell->material_id());
+        double             sum = 0, volume = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Tensor2 F = (I + grad_d[q]) * invert(I + grad_w[q]);
+            Tensor2       P;
+            // The mixed pressure is isotropic: no part of von Mises.
+            if (mixed ?
+                  law.evaluate_isochoric(F, P, nullptr, TangentType::warped) :
+                  law.evaluate(F, P, nullptr, TangentType::warped))
+              sum += von_mises(cauchy_stress(F, P)) * fe_values.JxW(q);
+            volume += fe_values.JxW(q);
+          }
+        result[cell->active_cell_index()] = sum / volume;
+      });
     return result;
   }
 
@@ -125,78 +148,61 @@ namespace RestShape
   {
     const unsigned int n =
       forward.discretization().mesh().triangulation().n_active_cells();
-    VolumeFields         result{Vector<float>(n), Vector<float>(n)};
-    FEValues<3>          fe_values(forward.discretization().mapping(),
-                          forward.discretization().fe(),
-                          forward.discretization().quadrature(),
-                          update_gradients | update_JxW_values);
-    const unsigned int   n_q = forward.discretization().quadrature().size();
-    std::vector<Tensor2> grad_d(n_q), grad_w(n_q);
-    const FEValuesExtractors::Vector u(0);
-    const Tensor2                    I = unit_symmetric_tensor<3>();
-    const bool mixed = forward.scene_parameters().discretization.mixed;
-    for (const auto &cell :
-         forward.discretization().dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[u].get_function_gradients(forward.displacement(), grad_d);
-          fe_values[u].get_function_gradients(forward.rest_displacement(),
-                                              grad_w);
-          const MaterialLaw &law = forward.materials().law(cell->material_id());
-          double             rest = 0, current = 0, pressure = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const Tensor2 G  = I + grad_w[q];
-              const Tensor2 F  = (I + grad_d[q]) * invert(G);
-              const double  dV = determinant(G) * fe_values.JxW(q);
-              const double  J  = determinant(F);
-              Tensor2       P;
-              rest += dV;
-              current += J * dV;
-              if (!mixed && law.evaluate(F, P, nullptr, TangentType::warped))
-                pressure -= trace(cauchy_stress(F, P)) / 3 * dV;
-            }
-          const unsigned int i   = cell->active_cell_index();
-          result.volume_ratio[i] = current / rest;
-          result.pressure[i] =
-            mixed ? -law.volumetric(current / rest).dU : pressure / rest;
-        }
+    VolumeFields  result{Vector<float>(n), Vector<float>(n)};
+    const Tensor2 I     = unit_symmetric_tensor<3>();
+    const bool    mixed = forward.scene_parameters().discretization.mixed;
+    for_each_owned_cell_gradients(
+      forward,
+      update_JxW_values,
+      [&](const auto &cell,
+          const auto &fe_values,
+          const auto &grad_d,
+          const auto &grad_w) {
+        const MaterialLaw &law  = forward.materials().law(cell->material_id());
+        double             rest = 0, current = 0, pressure = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Tensor2 G  = I + grad_w[q];
+            const Tensor2 F  = (I + grad_d[q]) * invert(G);
+            const double  dV = determinant(G) * fe_values.JxW(q);
+            Tensor2       P;
+            rest += dV;
+            current += determinant(F) * dV;
+            if (!mixed && law.evaluate(F, P, nullptr, TangentType::warped))
+              pressure -= trace(cauchy_stress(F, P)) / 3 * dV;
+          }
+        const unsigned int i   = cell->active_cell_index();
+        result.volume_ratio[i] = current / rest;
+        result.pressure[i] =
+          mixed ? -law.volumetric(current / rest).dU : pressure / rest;
+      });
     return result;
   }
 
   Compression
   most_compressed_cell(const ForwardProblem &forward)
   {
-    FEValues<3>          fe_values(forward.discretization().mapping(),
-                          forward.discretization().fe(),
-                          forward.discretization().quadrature(),
-                          update_gradients);
-    std::vector<Tensor2> grad_d(forward.discretization().quadrature().size()),
-      grad_w(forward.discretization().quadrature().size());
-    const FEValuesExtractors::Vector u(0);
-    const Tensor2                    I = unit_symmetric_tensor<3>();
-    Compression                      mine;
-    for (const auto &cell :
-         forward.discretization().dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[u].get_function_gradients(forward.displacement(), grad_d);
-          fe_values[u].get_function_gradients(forward.rest_displacement(),
-                                              grad_w);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const double det_F =
-                determinant(I + grad_d[q]) / determinant(I + grad_w[q]);
-              if (det_F < mine.det_F)
-                {
-                  mine.det_F = det_F;
-                  mine.where =
-                    cell_location_text(cell->material_id(), cell->center());
-                }
-            }
-        }
+    const Tensor2 I = unit_symmetric_tensor<3>();
+    Compression   mine;
+    for_each_owned_cell_gradients(
+      forward,
+      update_default,
+      [&](const auto &cell,
+          const auto &fe_values,
+          const auto &grad_d,
+          const auto &grad_w) {
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double det_F =
+              determinant(I + grad_d[q]) / determinant(I + grad_w[q]);
+            if (det_F < mine.det_F)
+              {
+                mine.det_F = det_F;
+                mine.where =
+                  cell_location_text(cell->material_id(), cell->center());
+              }
+          }
+      });
     Compression result;
     for (const auto &[det_F, where] :
          Utilities::MPI::all_gather(forward.discretization().communicator(),
