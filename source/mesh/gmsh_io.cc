@@ -155,18 +155,21 @@ namespace RestShape
 
     /// gmsh 2.2 $PhysicalNames of the labels of the cells that have names.
     void
-    write_physical_names(std::ostream      &out,
-                         const CellVisitor &cells,
-                         const LabelNames  &names)
+    write_physical_names(std::ostream                     &out,
+                         const CellVisitor                &cells,
+                         const LabelNames                 &names,
+                         const std::map<int, std::string> &surface_names)
     {
       std::set<Label> labels;
       cells([&](const Label label, const std::vector<unsigned int> &) {
         if (!names.name(label).empty())
           labels.insert(label);
       });
-      if (labels.empty())
+      if (labels.empty() && surface_names.empty())
         return;
-      out << "$PhysicalNames\n" << labels.size() << '\n';
+      out << "$PhysicalNames\n" << labels.size() + surface_names.size() << '\n';
+      for (const auto &[tag, name] : surface_names)
+        out << "2 " << tag << " \"" << name << "\"\n";
       for (const Label l : labels)
         out << "3 " << l << " \"" << names.name(l) << "\"\n";
       out << "$EndPhysicalNames\n";
@@ -182,7 +185,9 @@ namespace RestShape
                 const double                                 length_unit,
                 const std::string                           &file,
                 const RestShapeData                         *rest,
-                const LabelNames                            &names)
+                const LabelNames                            &names,
+                const std::vector<SurfaceTriangle>          &surfaces      = {},
+                const std::map<int, std::string>            &surface_names = {})
     {
       std::vector<bool> used(n_vertices, false);
       cells([&](Label, const std::vector<unsigned int> &vertices) {
@@ -193,7 +198,7 @@ namespace RestShape
         file,
         [&](std::ostream &out) {
           out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
-          write_physical_names(out, cells, names);
+          write_physical_names(out, cells, names, surface_names);
           out << "$Nodes\n"
               << std::count(used.begin(), used.end(), true) << '\n'
               << std::setprecision(16);
@@ -204,7 +209,7 @@ namespace RestShape
                 out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2]
                     << '\n';
               }
-          out << "$EndNodes\n$Elements\n" << n_cells << '\n';
+          out << "$EndNodes\n$Elements\n" << n_cells + surfaces.size() << '\n';
           // gmsh numbers hexahedron vertices counter-clockwise per face.
           static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
           unsigned int              n            = 0;
@@ -215,6 +220,10 @@ namespace RestShape
               out << ' ' << v[tet ? k : hex_order[k]] + 1;
             out << '\n';
           });
+          for (const SurfaceTriangle &t : surfaces)
+            out << ++n << " 2 2 " << t.tag << ' ' << t.tag << ' '
+                << t.vertices[0] + 1 << ' ' << t.vertices[1] + 1 << ' '
+                << t.vertices[2] + 1 << '\n';
           out << "$EndElements\n";
           if (rest != nullptr)
             write_rest_shape_data(out, used, *rest, length_unit);
@@ -432,17 +441,27 @@ namespace RestShape
   }
 
   void
-  write_gmsh(const MeshDescription &mesh,
-             const double           length_unit,
-             const std::string     &file)
+  write_gmsh(const MeshDescription              &mesh,
+             const double                        length_unit,
+             const std::string                  &file,
+             const std::vector<SurfaceTriangle> &surfaces,
+             const std::map<int, std::string>   &surface_names)
   {
-    write_gmsh(
-      mesh,
+    const CellVisitor cells = [&](const CellWriter &write) {
+      for (const auto &cell : mesh.cells)
+        write(cell.material_id, cell.vertices);
+    };
+    write_cells(
+      cells,
+      mesh.vertices.size(),
+      mesh.cells.size(),
       [&](const unsigned int v) { return mesh.vertices[v]; },
       length_unit,
       file,
       nullptr,
-      mesh.names);
+      mesh.names,
+      surfaces,
+      surface_names);
   }
 
   void

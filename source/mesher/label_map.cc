@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/input_file.h>
 #include <restshape/mesher/label_map.h>
 
 #include <algorithm>
@@ -28,12 +29,8 @@ namespace RestShape
                  const LabelNames  &atlas_names,
                  const std::string &names_option)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file,
-                       option,
-                       "cannot read the file; expected lines 'ATLAS_LABELS "
-                       "TISSUE_LABEL [NAME]'");
+    std::ifstream in =
+      open_input(file, option, "lines 'ATLAS_LABELS TISSUE_LABEL [NAME]'");
     LabelMap     map;
     std::string  line;
     unsigned int line_number = 0;

@@ -7,8 +7,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -174,6 +176,68 @@ namespace RestShape
                            "; expected a header that matches its image");
     }
 
+    /// The header's voxel sizes pixdim[1..3] as written (libnifti makes a
+    /// zero or non-finite one 1 mm); ones if the header cannot be read
+    /// (the image's own read reports that).
+    std::array<double, 3>
+    written_voxel_sizes(const std::string &file)
+    {
+      int                   version = 0;
+      void                 *raw = nifti_read_header(file.c_str(), &version, 0);
+      std::array<double, 3> h   = {{1, 1, 1}};
+      if (raw != nullptr && version == 1)
+        for (unsigned int d = 0; d < 3; ++d)
+          h[d] = static_cast<nifti_1_header *>(raw)->pixdim[d + 1];
+      else if (raw != nullptr && version == 2)
+        for (unsigned int d = 0; d < 3; ++d)
+          h[d] = static_cast<nifti_2_header *>(raw)->pixdim[d + 1];
+      std::free(raw);
+      return h;
+    }
+
+    /// The index of the first voxel of a float image that is not a finite
+    /// number as written (libnifti makes them 0, background), or -1.
+    long long
+    first_nonfinite_voxel(const nifti_image &nim)
+    {
+      if (nim.datatype != DT_FLOAT32 && nim.datatype != DT_FLOAT64)
+        return -1;
+      znzFile in = znzopen(nim.iname, "rb", nifti_is_gzfile(nim.iname));
+      if (znz_isnull(in))
+        return -1;
+      znzseek(in, nim.iname_offset, SEEK_SET);
+      const bool        swap  = nim.byteorder != nifti_short_order();
+      const size_t      bytes = nim.datatype == DT_FLOAT32 ? 4 : 8;
+      constexpr size_t  chunk = 1 << 16; // voxels per read
+      std::vector<char> buffer(chunk * bytes);
+      long long         found = -1;
+      for (long long start = 0; start < nim.nvox && found < 0; start += chunk)
+        {
+          const size_t n = std::min<long long>(chunk, nim.nvox - start);
+          if (znzread(buffer.data(), bytes, n, in) != n)
+            break;
+          if (swap)
+            bytes == 4 ? nifti_swap_4bytes(n, buffer.data()) :
+                         nifti_swap_8bytes(n, buffer.data());
+          for (size_t i = 0; i < n && found < 0; ++i)
+            {
+              double v;
+              if (bytes == 4)
+                {
+                  float f;
+                  std::memcpy(&f, buffer.data() + 4 * i, 4);
+                  v = f;
+                }
+              else
+                std::memcpy(&v, buffer.data() + 8 * i, 8);
+              if (!std::isfinite(v))
+                found = start + i;
+            }
+        }
+      znzclose(in);
+      return found;
+    }
+
     /// Voxel sizes and origin within the bounds above.
     void
     check_geometry(const LabelledImage &image,
@@ -228,6 +292,19 @@ namespace RestShape
     if (!nim || nim->data == nullptr)
       throw fail("not a readable NIfTI image; expected a labelled NIfTI "
                  "image (.nii or .nii.gz)");
+    std::array<double, 3> written;
+    long long             nonfinite = -1;
+    {
+      const SilencedStderr silenced;
+      written   = written_voxel_sizes(file);
+      nonfinite = first_nonfinite_voxel(*nim);
+    }
+    if (nonfinite >= 0)
+      throw fail("voxel (" + std::to_string(nonfinite % nim->nx) + ", " +
+                 std::to_string((nonfinite / nim->nx) % nim->ny) + ", " +
+                 std::to_string(nonfinite / (nim->nx * nim->ny)) +
+                 ") holds a value that is not a finite number; expected "
+                 "whole-number labels");
     if (nim->nx < 2 || nim->ny < 2 || nim->nz < 2 || nim->nt > 1 || nim->nu > 1)
       throw fail("the image has dimensions " + std::to_string(nim->nx) + "x" +
                  std::to_string(nim->ny) + "x" + std::to_string(nim->nz) + "x" +
@@ -302,6 +379,18 @@ namespace RestShape
         map              = &nim->qto_xyz;
         image.xform_code = nim->qform_code;
       }
+    // libnifti makes a voxel size of 0 (or NaN) a 1 mm one: the header's
+    // own sizes are checked wherever the sform does not replace them.
+    if (nim->sform_code <= 0)
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const double h = written[d];
+          if (!(std::abs(h) > 0) || !std::isfinite(h))
+            throw fail("voxel size pixdim[" + std::to_string(d + 1) +
+                       "] = " + number_text(h) +
+                       " in the header; expected positive voxel sizes in "
+                       "mm");
+        }
     for (unsigned int r = 0; r < 3; ++r)
       {
         for (unsigned int c = 0; c < 3; ++c)

@@ -15,6 +15,7 @@
 #include <restshape/mesh/labelled_mesh.h>
 #include <restshape/mesh/mesh_checks.h>
 #include <restshape/mesh/mesh_pieces.h>
+#include <restshape/mesher/components.h>
 #include <restshape/mesher/image_mesher.h>
 #include <restshape/mesher/image_morphology.h>
 #include <restshape/mesher/label_map.h>
@@ -38,6 +39,7 @@ namespace
     "  restshape-mesh --image LABELS.nii[.gz] --out MESH.msh\n"
     "      [--cell-size MM] [--facet-size MM] [--facet-distance MM]\n"
     "      [--sliver-bound DEG] [--seed N] [--min-piece-fraction F]\n"
+    "      [--optimise none|odt|lloyd [--optimise-iterations N]]\n"
     "      [--close-sulci MM]\n"
     "      [--label-names NAMES.txt] [--label-map MAP.txt\n"
     "       [--unlisted-labels error|background]]\n"
@@ -85,7 +87,22 @@ namespace
     "Atlas labels are labels, ranges or (with --label-names) atlas names;\n"
     "the mesh carries the tissue names. Image labels the map does not list\n"
     "are an error that lists them, or background with --unlisted-labels\n"
-    "background.\n";
+    "background.\n"
+    "\n"
+    "Every connected component of every label is meshed, inclusions enclosed\n"
+    "by another label and cavities (label 0 inside the body, e.g. ventricles)\n"
+    "too: Mesh_3 starts from points on each component's boundary. The report\n"
+    "gives each label's components and volume in the image and in the mesh\n"
+    "and the boundary surfaces (the outer one and each cavity's wall); a\n"
+    "component of more than 8 cells' volume missing from the mesh is an error\n"
+    "(a smaller one a warning). Labels on the image's border keep their outer\n"
+    "half voxel. --seed N (default 0) seeds Mesh_3's random numbers: the same\n"
+    "seed gives the same mesh. --optimise odt|lloyd runs CGAL's ODT or Lloyd\n"
+    "smoothing (--optimise-iterations, default 10) before the sliver\n"
+    "perturbation and exudation; the quality report names the worst cells.\n"
+    "Long phases print a line every 5 s. The boundary is written as gmsh\n"
+    "physical surfaces by role: 1 outer_surface (skull contact, CSF), 2\n"
+    "cavity_walls (ventricles); restshape reads the volumes alone.\n";
 } // namespace
 
 using namespace RestShape;
@@ -162,6 +179,13 @@ namespace
     o.facet_distance = cl.positive("--facet-distance", o.facet_distance);
     o.sliver_bound   = cl.positive("--sliver-bound", o.sliver_bound);
     o.seed           = cl.integer("--seed", o.seed, 0, 2147483647);
+    const std::string optimiser =
+      cl.choice("--optimise", "none", {"none", "odt", "lloyd"});
+    o.optimiser = optimiser == "odt"   ? MeshOptimiser::odt :
+                  optimiser == "lloyd" ? MeshOptimiser::lloyd :
+                                         MeshOptimiser::none;
+    o.optimiser_iterations =
+      cl.integer("--optimise-iterations", o.optimiser_iterations, 1, 1000);
     s.min_piece_fraction =
       cl.non_negative("--min-piece-fraction", s.min_piece_fraction);
     if (s.min_piece_fraction > 1)
@@ -316,9 +340,8 @@ namespace
                        "--cell-size",
                        number_text(s.options.cell_size) + " mm makes about " +
                          number_text(tetrahedra) + " tetrahedra (" +
-                         gibibytes_text(bytes) +
-                         "), more than this machine's " +
-                         gibibytes_text(physical_memory_bytes()) +
+                         gibibytes_text(bytes) + "), more than " +
+                         available_memory().text() +
                          "; expected a larger cell size");
   }
 
@@ -349,15 +372,16 @@ namespace
   /// Mesh_3 and the removal of pieces that hang at vertices or edges.
   /// The labels of @p image are freed unless @p keep_image.
   MeshDescription
-  make_mesh(LabelledImage        &image,
-            const MesherSettings &s,
-            const bool            keep_image)
+  make_mesh(LabelledImage         &image,
+            const MesherSettings  &s,
+            const bool             keep_image,
+            const ImageComponents &components)
   {
     dealii::Timer   timer;
-    const auto     &o    = s.options;
-    MeshDescription mesh = keep_image ?
-                             mesh_labelled_image(image, o) :
-                             mesh_labelled_image(std::move(image), o);
+    const auto     &o = s.options;
+    MeshDescription mesh =
+      keep_image ? mesh_labelled_image(image, o, components) :
+                   mesh_labelled_image(std::move(image), o, components);
     if (mesh.cells.empty())
       throw InputError(
         s.image_file,
@@ -441,6 +465,67 @@ namespace
               << " cells below 10 deg), radius-edge ratio mean "
               << q.mean_radius_edge << ", max " << q.max_radius_edge
               << std::endl;
+    if (!q.worst_cells.empty())
+      {
+        std::cout << "worst cells (smallest dihedral angle; --optimise odt "
+                     "or lloyd, or a larger --sliver-bound, improves them):";
+        for (const auto &[angle, c] : q.worst_cells)
+          {
+            dealii::Point<3> centre;
+            for (const unsigned int v : mesh.cells[c].vertices)
+              centre += mesh.vertices[v] / 4.;
+            std::cout << "\n  " << angle << " deg at (" << centre[0] << ", "
+                      << centre[1] << ", " << centre[2] << ") mm, "
+                      << label_text(mesh.cells[c].material_id, mesh.names);
+          }
+        std::cout << std::endl;
+      }
+  }
+
+  /// The components of the image against the mesh's (report_mesh's
+  /// lines); InputError naming --cell-size if the mesh lost a component
+  /// or cavity of more than a few cells' volume.
+  MeshComponents
+  check_components(const MeshDescription &mesh,
+                   const ImageComponents &image,
+                   const ImageVolumes    &volumes,
+                   const MesherSettings  &s)
+  {
+    const auto  &h     = volumes.spacing;
+    const double least = least_component_volume(s.options.cell_size);
+    std::cout << "components (6-connected voxels; face-connected cells):"
+              << std::endl;
+    MeshComponents    pieces = mesh_components(mesh);
+    const std::string lost   = compare_components(
+      image,
+      pieces,
+      h[0] * h[1] * h[2],
+      least,
+      [&](const unsigned int label) { return label_text(label, mesh.names); },
+      std::cout);
+    if (!lost.empty())
+      throw InputError(s.image_file,
+                       "--cell-size",
+                       lost +
+                         "; expected a smaller --cell-size (and --facet-size) "
+                         "that resolves them");
+    return pieces;
+  }
+
+  /// Physical surface tags of the boundary by role.
+  constexpr int outer_surface_tag = 1, cavity_wall_tag = 2;
+
+  /// The boundary triangles, tagged by role: the outer surface (skull
+  /// contact, CSF) and the walls of cavities (ventricles).
+  std::vector<SurfaceTriangle>
+  surfaces_by_role(const MeshComponents &pieces)
+  {
+    std::vector<SurfaceTriangle> triangles;
+    for (unsigned int f = 0; f < pieces.boundary_faces.size(); ++f)
+      triangles.push_back(
+        {pieces.boundary_faces[f],
+         pieces.on_cavity_wall(f) ? cavity_wall_tag : outer_surface_tag});
+    return triangles;
   }
 
   /// The skull's facet distance (mm): within half the gap of the exact
@@ -544,6 +629,8 @@ main(int argc, char **argv)
                             "--facet-distance",
                             "--sliver-bound",
                             "--seed",
+                            "--optimise",
+                            "--optimise-iterations",
                             "--min-piece-fraction",
                             "--close-sulci",
                             "--skull-out",
@@ -588,11 +675,17 @@ main(int argc, char **argv)
       const ImageVolumes volumes{s.close_sulci > 0 ? closed.label_counts() :
                                                      counts,
                                  meshed_image.spacing()};
-      MeshDescription mesh =
-        make_mesh(meshed_image, s, s.close_sulci == 0 && !s.skull_out.empty());
+      const ImageComponents components = image_components(meshed_image);
+      MeshDescription       mesh =
+        make_mesh(meshed_image,
+                  s,
+                  s.close_sulci == 0 && !s.skull_out.empty(),
+                  components);
       for (const auto &[label, name] : names.by_label())
         mesh.names.add(label, name, s.out, "--out");
       report_mesh(mesh, volumes, s);
+      const MeshComponents pieces =
+        check_components(mesh, components, volumes, s);
 
       MeshDescription in_metres = mesh;
       for (auto &p : in_metres.vertices)
@@ -600,7 +693,12 @@ main(int argc, char **argv)
       check_mesh(in_metres, s.out);
       // The mesh and its skull appear together, once both are made.
       StagedFiles staged;
-      write_gmsh(in_metres, 1e-3, staged.stage(s.out));
+      write_gmsh(in_metres,
+                 1e-3,
+                 staged.stage(s.out),
+                 surfaces_by_role(pieces),
+                 {{outer_surface_tag, "outer_surface"},
+                  {cavity_wall_tag, "cavity_walls"}});
       if (!s.skull_out.empty())
         write_skull(image, cavity, in_metres, s, staged.stage(s.skull_out));
       staged.commit("--out");

@@ -4,7 +4,9 @@
 
 #include <restshape/mesh/mesh_description.h>
 
+#include <array>
 #include <functional>
+#include <map>
 #include <string>
 
 namespace RestShape
@@ -74,11 +76,24 @@ namespace RestShape
              const RestShapeData                                 *rest,
              const LabelNames                                    &names);
 
-  /// The same for a mesh description (vertices in metres).
+  /// A boundary triangle to write with the cells: its vertices (outward
+  /// oriented) and its physical surface tag.
+  struct SurfaceTriangle
+  {
+    std::array<unsigned int, 3> vertices;
+    int                         tag;
+  };
+
+  /// The same for a mesh description (vertices in metres), with the
+  /// triangles of @p surfaces as gmsh physical surfaces named by
+  /// @p surface_names (tag -> name); RestShape's readers take the volumes
+  /// alone, ParaView and meshio show both.
   void
-  write_gmsh(const MeshDescription &mesh,
-             const double           length_unit,
-             const std::string     &file);
+  write_gmsh(const MeshDescription              &mesh,
+             const double                        length_unit,
+             const std::string                  &file,
+             const std::vector<SurfaceTriangle> &surfaces      = {},
+             const std::map<int, std::string>   &surface_names = {});
 
 } // namespace RestShape
 

@@ -37,10 +37,11 @@ main()
   const auto counts = image.label_counts();
 
   ImageMeshOptions options;
-  options.cell_size          = 4;
-  options.facet_size         = 4;
-  options.facet_distance     = 0.5;
-  const MeshDescription mesh = mesh_labelled_image(image, options);
+  options.cell_size      = 4;
+  options.facet_size     = 4;
+  options.facet_distance = 0.5;
+  const MeshDescription mesh =
+    mesh_labelled_image(image, options, image_components(image));
 
   MeshDescription in_metres = mesh;
   for (auto &p : in_metres.vertices)
