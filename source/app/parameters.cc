@@ -79,7 +79,7 @@ namespace RestShape
     forward.parse_parameters(prm, mesh.length_unit);
     parse_registered_parameters(prm, forward, mesh.length_unit);
     double max_poissons_ratio = -1;
-    for (const auto &[label, nu] : forward.materials.poissons_ratio.listed())
+    for (const double nu : forward.materials.listed_poissons_ratios())
       max_poissons_ratio = std::max(max_poissons_ratio, nu);
     forward.discretization.resolve_formulation(max_poissons_ratio,
                                                mesh.cell_type ==

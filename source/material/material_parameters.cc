@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 namespace RestShape
 {
@@ -33,6 +34,24 @@ namespace RestShape
                       "Poisson's ratio, in (-1, 0.5): one value or "
                       "'label:value' list (ranges and '*' as for Young's "
                       "modulus).");
+    prm.declare_entry("Shear modulus",
+                      "",
+                      Patterns::Anything(),
+                      "Shear modulus mu in Pa, with Bulk modulus instead of "
+                      "Young's modulus and Poisson's ratio (E = 9 K mu / (3 "
+                      "K + mu), nu = (3 K - 2 mu) / (2 (3 K + mu))): one value "
+                      "or 'label:value' list (ranges and '*' as for Young's "
+                      "modulus). Empty: not used. A label given a shear "
+                      "modulus needs a bulk modulus.");
+    prm.declare_entry("Bulk modulus",
+                      "",
+                      Patterns::Anything(),
+                      "Bulk modulus K in Pa, the volumetric stiffness (in vivo "
+                      "brain tissue about 1.5e5 Pa against a shear modulus "
+                      "below 1e3 Pa): one value or 'label:value' list. Where "
+                      "a label has one, it replaces Poisson's ratio: with a "
+                      "shear modulus as above, else from Young's modulus, nu "
+                      "= (3 K - E) / (6 K) (K > E / 9). Empty: not used.");
     prm.declare_entry("Density",
                       "1040",
                       Patterns::Anything(),
@@ -53,6 +72,93 @@ namespace RestShape
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// Moduli beyond any material are input errors.
+    void
+    check_moduli(const LabelValues &values, const std::string &parameter)
+    {
+      constexpr double least = 1e-3, largest = 1e15; // Pa, as for E
+      for (const auto &[label, v] : values.listed())
+        if (!(v >= least && v <= largest))
+          throw InputError("",
+                           parameter,
+                           number_text(v) + " Pa" +
+                             (label == dealii::numbers::invalid_material_id ?
+                                std::string() :
+                                " for label " + std::to_string(label)) +
+                             "; expected " + number_text(least) +
+                             " Pa <= value <= " + number_text(largest) + " Pa");
+    }
+
+    bool
+    given(const LabelValues &values, const Label label)
+    {
+      return !values.parameter.empty() && values.has(label);
+    }
+  } // namespace
+
+  double
+  MaterialParameters::youngs_modulus_of(const Label label) const
+  {
+    if (!given(shear_modulus, label))
+      return youngs_modulus(label);
+    if (!given(bulk_modulus, label))
+      throw InputError("",
+                       "Materials/Bulk modulus",
+                       "label " + std::to_string(label) +
+                         " has a shear modulus but no bulk modulus; expected "
+                         "both (or Young's modulus and Poisson's ratio)");
+    const double mu = shear_modulus(label), K = bulk_modulus(label);
+    return 9 * K * mu / (3 * K + mu);
+  }
+
+  double
+  MaterialParameters::poissons_ratio_of(const Label label) const
+  {
+    if (!given(bulk_modulus, label))
+      return poissons_ratio(label);
+    const double K  = bulk_modulus(label);
+    const double E  = youngs_modulus_of(label);
+    const double nu = (3 * K - E) / (6 * K);
+    if (!(nu > -1 && nu < 0.5))
+      throw InputError("",
+                       "Materials/Bulk modulus",
+                       "K = " + number_text(K) + " Pa for label " +
+                         std::to_string(label) + " with E = " + number_text(E) +
+                         " Pa gives nu = " + number_text(nu) +
+                         "; expected K > E / 9 (nu > -1)");
+    return nu;
+  }
+
+  std::vector<double>
+  MaterialParameters::listed_poissons_ratios() const
+  {
+    std::vector<double> result;
+    if (bulk_modulus.parameter.empty())
+      {
+        for (const auto &[label, nu] : poissons_ratio.listed())
+          result.push_back(nu);
+        return result;
+      }
+    // The labels any modulus names, and one that only defaults cover.
+    std::set<Label> labels = {dealii::numbers::invalid_material_id - 1};
+    for (const LabelValues *v :
+         {&youngs_modulus, &poissons_ratio, &shear_modulus, &bulk_modulus})
+      for (const auto &[label, x] : v->per_label)
+        labels.insert(label);
+    for (const Label label : labels)
+      try
+        {
+          result.push_back(poissons_ratio_of(label));
+        }
+      catch (const InputError &)
+        {
+          // A label without values: the mesh's labels are checked later.
+        }
+    return result;
+  }
+
   void
   MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -62,7 +168,14 @@ namespace RestShape
     poissons_ratio = LabelValues::parse(prm.get("Poisson's ratio"),
                                         "Materials/Poisson's ratio");
     density = LabelValues::parse(prm.get("Density"), "Materials/Density");
-    law     = prm.get("Material law");
+    const auto optional = [&](const std::string &name) {
+      const std::string text = dealii::Utilities::trim(prm.get(name));
+      return text.empty() ? LabelValues() :
+                            LabelValues::parse(text, "Materials/" + name);
+    };
+    shear_modulus = optional("Shear modulus");
+    bulk_modulus  = optional("Bulk modulus");
+    law           = prm.get("Material law");
     prm.leave_subsection();
 
     const auto where = [](const LabelValues &values, const Label l) {
@@ -90,6 +203,8 @@ namespace RestShape
                          "nu = " + number_text(nu) +
                            where(poissons_ratio, label) +
                            "; expected -1 < nu < 0.5");
+    check_moduli(shear_modulus, "Materials/Shear modulus");
+    check_moduli(bulk_modulus, "Materials/Bulk modulus");
     for (const auto &[label, rho] : density.listed())
       if (!(rho >= 0 && rho <= max_density))
         throw InputError("",

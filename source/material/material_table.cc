@@ -32,12 +32,12 @@ namespace RestShape
     for (const Label label : labels)
       {
         Entry e;
-        e.E   = prm.youngs_modulus(label);
+        e.E   = prm.youngs_modulus_of(label);
         e.rho = prm.density(label);
 
         // A label needs a value of the parameters of its own law only.
         const std::string &name = law_names[std::size_t(laws(label))];
-        LawParameters      law{e.E, prm.poissons_ratio(label), {}};
+        LawParameters      law{e.E, prm.poissons_ratio_of(label), {}};
         for (const std::string &p : material_law_parameter_names(name))
           if (const auto v = prm.law_values.find(p); v != prm.law_values.end())
             law.values[p] = v->second(label);
