@@ -4,6 +4,8 @@
 # trace, and leave an earlier result in the output directory untouched.
 # EXIT_CODE 2 (a solver that failed): the one line, and a summary.json that
 # says "converged": false with the failure (its figures), instead.
+# EXIT_CODE 4 (a scenario failed): the one line, and a summary.json that
+# says "converged": true and "scenarios_converged": false.
 # Environment: STDOUT_REGEX, if set, must match the screen output (stdout);
 # MPI_RANKS, if set, runs restshape on that many ranks under mpirun.
 #
@@ -44,6 +46,10 @@ fi
 if [ "$expected_code" -eq 2 ]; then
   grep -q '"converged": false' "$out/summary.json" || fail "summary.json does not say converged: false"
   grep -q '"failure"' "$out/summary.json" || fail "summary.json does not give the failure"
+  grep -qiE 'nan|inf' "$out/summary.json" && fail "NaN or Inf in summary.json"
+elif [ "$expected_code" -eq 4 ]; then
+  grep -q '"converged": true' "$out/summary.json" || fail "summary.json does not say converged: true"
+  grep -q '"scenarios_converged": false' "$out/summary.json" || fail "summary.json does not say scenarios_converged: false"
   grep -qiE 'nan|inf' "$out/summary.json" && fail "NaN or Inf in summary.json"
 else
   cmp -s "$out/summary.json" "$out/sentinel" || fail "an earlier result was overwritten"

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <restshape/app/run_size.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/machine_memory.h>
@@ -44,13 +46,29 @@ namespace RestShape
   }
 
   RunSize
-  estimate_run_size(const std::size_t cells_read, const Parameters &parameters)
+  estimate_run_size(const std::size_t  cells_read,
+                    const Parameters  &parameters,
+                    const unsigned int cycles)
   {
-    RunSize size;
-    size.cells = cells_read * std::pow(children_per_cell,
-                                       parameters.mesh.global_refinements);
+    const RefinementParameters &r = parameters.refinement;
+    // Each cycle refines every cell (global) or the refine fraction of
+    // them (adaptive: 8 children each, so 1 + 7 f times the cells).
+    const double growth = r.strategy == RefinementParameters::Strategy::global ?
+                            children_per_cell :
+                            1 + (children_per_cell - 1) * r.refine_fraction;
+    RunSize      size;
+    size.cells =
+      cells_read *
+      std::pow(children_per_cell, parameters.mesh.global_refinements) *
+      std::pow(growth, cycles);
+    // The mean-dilatation mixed formulation adds no global DoF (its
+    // pressure is condensed per cell).
     size.dofs  = size.cells * dofs_per_cell(parameters);
     size.bytes = size.cells * bytes_per_cell + size.dofs * bytes_per_dof;
+    // Every rank holds the mesh as read before it keeps its own part.
+    const unsigned int ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    size.bytes += (ranks - 1) * double(cells_read) * bytes_per_cell;
     return size;
   }
 
@@ -61,20 +79,44 @@ namespace RestShape
                  const bool         print)
   {
     const unsigned int refinements = parameters.mesh.global_refinements;
-    if (refinements == 0)
+    const unsigned int cycles      = parameters.refinement.cycles;
+    if (refinements == 0 && cycles == 0)
       return;
-    const RunSize      size = estimate_run_size(cells_read, parameters);
+    const RunSize      size = estimate_run_size(cells_read, parameters, cycles);
     std::ostringstream what;
-    what << refinements << " uniform refinement" << (refinements > 1 ? "s" : "")
-         << " of " << cells_read << " cells make " << size.text();
+    what << cells_read << " cells";
+    if (refinements > 0)
+      what << ", " << refinements << " uniform refinement"
+           << (refinements > 1 ? "s" : "");
+    if (cycles > 0)
+      what << ", " << cycles << " refinement cycle" << (cycles > 1 ? "s" : "")
+           << " ("
+           << (parameters.refinement.strategy ==
+                   RefinementParameters::Strategy::global ?
+                 "global" :
+                 "adaptive, refine fraction " +
+                   number_text(parameters.refinement.refine_fraction))
+           << ")";
+    const unsigned int ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    what << (ranks > 1 ? " on " + std::to_string(ranks) + " ranks" : "")
+         << " make " << size.text();
     if (exceeds_machine_memory(size.bytes, usable_share))
-      throw InputError(prm_file,
-                       "Mesh/Global refinements",
-                       what.str() + ", more than this machine's " +
-                         gibibytes_text(physical_memory_bytes()) +
-                         "; expected fewer refinements (or a machine "
-                         "with more memory)");
+      {
+        // Blame the cycles if the mesh fits without them.
+        const bool cycles_too_many =
+          cycles > 0 &&
+          !exceeds_machine_memory(
+            estimate_run_size(cells_read, parameters, 0).bytes, usable_share);
+        throw InputError(prm_file,
+                         cycles_too_many ? "Adaptive refinement/Cycles" :
+                                           "Mesh/Global refinements",
+                         what.str() + ", more than " +
+                           available_memory().text() + "; expected fewer " +
+                           (cycles_too_many ? "cycles" : "refinements") +
+                           " (or a machine with more memory)");
+      }
     if (print)
-      std::cout << "Mesh/Global refinements: " << what.str() << std::endl;
+      std::cout << "Run size: " << what.str() << std::endl;
   }
 } // namespace RestShape

@@ -5,6 +5,7 @@
 #include <restshape/app/scenario.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_reductions.h>
+#include <restshape/base/progress.h>
 #include <restshape/base/units.h>
 #include <restshape/base/vector_text.h>
 #include <restshape/contact/contact_report.h>
@@ -209,8 +210,41 @@ namespace RestShape
     return text.empty() ? "no change" : text;
   }
 
-  void
-  Scenario::run(const Failure &fail)
+  const std::string &
+  Scenario::failure() const
+  {
+    return failure_text;
+  }
+
+  bool
+  Scenario::failed(const SolveStatistics &s, const std::string &model)
+  {
+    failure_text = model + " model: " + s.failure;
+    record_scenario_failure(summary, scenario.output_name(), failure_text);
+    pcout << "  " << scenario.section() << " did not converge (" << failure_text
+          << "); the next scenario starts from the equilibrium again"
+          << std::endl;
+    return false;
+  }
+
+  SolveStatistics
+  Scenario::solve(const LoadState &load, const VectorType &rest)
+  {
+    try
+      {
+        return forward.solve(load, rest);
+      }
+    catch (const SolverFailure &e)
+      {
+        SolveStatistics s;
+        s.converged = false;
+        s.failure   = e.what();
+        return s;
+      }
+  }
+
+  bool
+  Scenario::run()
   {
     // The pre-stressed model's equilibrium: where both models start.
     const VectorType d_eq =
@@ -242,9 +276,24 @@ namespace RestShape
 
     pcout << "  pre-stressed model: the scene's loads -> the changed loads"
           << std::endl;
-    const LoadState       change = difference(changed, scene);
-    const SolveStatistics s1 =
-      solve_pre_stressed(changed, change, w_rest, fail);
+    set_progress_phase(scenario.section() + ", pre-stressed model");
+    const LoadState change = difference(changed, scene);
+    // Back at the equilibrium, the skull closed, for the next scenario.
+    const auto back_to_equilibrium = [&]() {
+      forward.loads().open(Region());
+      if (contact != nullptr)
+        {
+          contact->close_openings();
+          contact->set_state(equilibrium_set);
+        }
+      forward.set_state(d_eq, w_rest, scene);
+    };
+    const SolveStatistics s1 = solve_pre_stressed(changed, change, w_rest);
+    if (!s1.converged)
+      {
+        back_to_equilibrium();
+        return failed(s1, "pre-stressed");
+      }
     const VectorType d1 =
       forward.discretization().owned_copy(forward.displacement());
     VectorType u1 = d1;
@@ -270,9 +319,14 @@ namespace RestShape
     pcout << "  stress-free model (rest shape = the pre-stressed equilibrium, "
              "the same contact set): the change alone"
           << std::endl;
+    set_progress_phase(scenario.section() + ", stress-free model");
     VectorType            u2 = forward.discretization().zero_vector();
-    const SolveStatistics s2 =
-      solve_stress_free(change, d_eq, start_set, fail, u2);
+    const SolveStatistics s2 = solve_stress_free(change, d_eq, start_set, u2);
+    if (!s2.converged)
+      {
+        back_to_equilibrium();
+        return failed(s2, "stress-free");
+      }
 
     // The pre-stressed model's end state is the one written.
     forward.set_state(d1, w_rest, changed);
@@ -280,22 +334,15 @@ namespace RestShape
       contact->set_state(end_set);
     record_scenario_newton(summary, scenario.output_name(), s1, s2);
     report(u1, u2, contact_fields);
-
-    // Back at the equilibrium, the skull closed, for the next scenario.
-    forward.loads().open(Region());
-    if (contact != nullptr)
-      {
-        contact->close_openings();
-        contact->set_state(equilibrium_set);
-      }
-    forward.set_state(d_eq, w_rest, scene);
+    record_scenario_success(summary, scenario.output_name());
+    back_to_equilibrium();
+    return true;
   }
 
   SolveStatistics
   Scenario::solve_pre_stressed(const LoadState  &changed,
                                const LoadState  &change,
-                               const VectorType &w_rest,
-                               const Failure    &fail)
+                               const VectorType &w_rest)
   {
     SolveStatistics s;
     if (change.empty() && !scenario.change.opening.defined())
@@ -310,17 +357,13 @@ namespace RestShape
               << std::endl;
         return s;
       }
-    s = forward.solve(changed, w_rest);
-    if (!s.converged)
-      fail(s, "pre-stressed");
-    return s;
+    return solve(changed, w_rest);
   }
 
   SolveStatistics
   Scenario::solve_stress_free(const LoadState             &change,
                               const VectorType            &d_eq,
                               const ContactProblem::State &start_set,
-                              const Failure               &fail,
                               VectorType                  &shift)
   {
     SolveStatistics s;
@@ -339,9 +382,9 @@ namespace RestShape
     forward.set_state(d_eq, d_eq, LoadState());
     if (contact != nullptr)
       contact->set_state(start_set);
-    s = forward.solve(change, d_eq);
+    s = solve(change, d_eq);
     if (!s.converged)
-      fail(s, "stress-free");
+      return s;
     shift = forward.discretization().owned_copy(forward.displacement());
     shift -= d_eq;
     return s;

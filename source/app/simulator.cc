@@ -51,6 +51,20 @@ namespace RestShape
       {
         throw;
       }
+    catch (const ScenarioFailure &)
+      {
+        // Its summary is written: the rest shape converged.
+        throw;
+      }
+    catch (const OutputFailure &e)
+      {
+        // Partial results are no results: removed, and the summary says
+        // why where the disk still takes it.
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          remove_previous_results(parameters.output.directory);
+        record_failure(e.what());
+        throw;
+      }
     catch (const SolverFailure &e)
       {
         // A piece that only a hinge holds is the likely cause: say so.
@@ -80,8 +94,9 @@ namespace RestShape
       return;
     record_run_failure(summary, what);
     record_run_end(summary, wall_timer.wall_time());
-    output->write_text("summary.json",
-                       [&](std::ostream &out) { summary.write(out); });
+    // Not collective: the failure may be this rank's alone.
+    output->try_write_text("summary.json",
+                           [&](std::ostream &out) { summary.write(out); });
   }
 
   void
@@ -131,10 +146,40 @@ namespace RestShape
         forward->release_linear_solver();
         postprocess(cycle, stats);
       }
-    for (const ScenarioParameters &scenario : parameters.scenarios)
-      run_scenario(scenario);
+    const std::vector<std::string> failed = run_scenarios();
+    if (!std::cout.good())
+      summary.set("screen_output",
+                  std::string("lost: stdout was closed (broken pipe)"));
     write_summary(stats);
     timer.print_summary();
+    if (!failed.empty())
+      throw ScenarioFailure(scenario_failure_text(failed));
+  }
+
+  std::vector<std::string>
+  Simulator::run_scenarios()
+  {
+    std::vector<std::string> failed;
+    for (const ScenarioParameters &scenario : parameters.scenarios)
+      if (!run_scenario(scenario))
+        failed.push_back(scenario.section());
+    if (!parameters.scenarios.empty())
+      summary.set("scenarios_converged", failed.empty());
+    return failed;
+  }
+
+  std::string
+  Simulator::scenario_failure_text(const std::vector<std::string> &failed) const
+  {
+    std::string names;
+    for (const std::string &name : failed)
+      names += (names.empty() ? "" : ", ") + name;
+    return std::to_string(failed.size()) + " of " +
+           std::to_string(parameters.scenarios.size()) +
+           " scenarios did not converge (" + names +
+           "; summary.json gives each one's failure); the " +
+           (parameters.inverse.enabled ? "rest shape" : "equilibrium") +
+           " converged and its results are written";
   }
 
   void
@@ -191,10 +236,14 @@ namespace RestShape
       {
         contact->setup();
         check_obstacle_placement();
+        const ContactReport report(*contact);
+        const unsigned int  walls = report.n_cavity_wall_faces();
         pcout << "Contact: " << parameters.contact.obstacle_file << ", "
-              << ContactReport(*contact).n_candidates()
-              << " candidate nodes, allowed side: "
+              << report.n_candidates() << " candidate nodes, allowed side: "
               << (parameters.contact.inside ? "inside" : "outside")
+              << (walls > 0 ? ", " + std::to_string(walls) +
+                                " faces of cavity walls left out" :
+                              "")
               << std::endl;
       }
   }
@@ -267,6 +316,21 @@ namespace RestShape
   Simulator::prepare_output()
   {
     ensure_writable_directory(parameters.output.directory);
+    // One run per directory: rank 0 owns it, and a refusal ends every
+    // rank alike.
+    std::string owned;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          claim_directory(parameters.output.directory);
+        }
+      catch (const InputError &e)
+        {
+          owned = e.message;
+        }
+    owned = Utilities::MPI::broadcast(comm, owned, 0);
+    if (!owned.empty())
+      throw InputError(parameters.output.directory, "Output/Directory", owned);
     output = std::make_unique<OutputWriter>(parameters.output.directory,
                                             parameters.mesh.length_unit,
                                             comm);
@@ -449,9 +513,15 @@ namespace RestShape
               w[cell->vertex_dof_index(v, c)];
     // It remembers its target (the mesh) and the image's masses, so that a
     // forward run from it alone reaches the target with the same mass.
-    mesh->write_gmsh(rest_positions,
-                     output->path("rest_shape.msh"),
-                     image_mass_ratios(*forward));
+    // Rank 0 writes it; a failure ends every rank.
+    const std::string file = output->path("rest_shape.msh");
+    write_on_every_rank(
+      comm,
+      file,
+      [&]() {
+        mesh->write_gmsh(rest_positions, file, image_mass_ratios(*forward));
+      },
+      true);
   }
 
   std::string
@@ -463,7 +533,7 @@ namespace RestShape
       return "the follower pressure acts on a surface with free edges: its "
              "tangent is not symmetric, and stability is then not a question "
              "of the energy";
-    return "";
+    return free_dofs_missing(*forward);
   }
 
   std::string
@@ -485,8 +555,11 @@ namespace RestShape
         return "";
       }
     record_stability(summary, s);
+    std::string how = s.variant_text();
+    if (!s.mass_text().empty())
+      how += (how.empty() ? "" : "; ") + s.mass_text();
     pcout << "  Stability: " << s.text()
-          << (s.exact_solves ? "" : " (" + s.variant_text() + ")") << std::endl;
+          << (how.empty() ? "" : " (" + how + ")") << std::endl;
     return s.stable() ? std::string() : s.text();
   }
 
@@ -514,26 +587,17 @@ namespace RestShape
     throw SolverFailure(failed.failure);
   }
 
-  void
+  bool
   Simulator::run_scenario(const ScenarioParameters &parameters_of_scenario)
   {
-    Scenario          scenario(parameters,
+    Scenario scenario(parameters,
                       parameters_of_scenario,
                       *forward,
                       contact.get(),
                       *output,
                       summary,
                       pcout);
-    const std::string section = parameters_of_scenario.name.empty() ?
-                                  "scenario" :
-                                  "scenario " + parameters_of_scenario.name;
-    scenario.run(
-      [this, &section](const SolveStatistics &stats, const std::string &model) {
-        SolveStatistics failed = stats;
-        failed.failure = section + ", " + model + " model: " + stats.failure;
-        write_summary(failed);
-        throw SolverFailure("the " + failed.failure);
-      });
+    return scenario.run();
   }
 
 } // namespace RestShape

@@ -44,6 +44,7 @@ namespace RestShape
         "a rest shape file describes one mesh; expected Adaptive "
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
+    check_something_is_free();
     if (!parameters.scenarios.empty())
       try
         {
@@ -53,6 +54,19 @@ namespace RestShape
         {
           throw e.in_file(prm_file);
         }
+  }
+
+  void
+  Simulator::check_something_is_free() const
+  {
+    for (const Label label : mesh->labels())
+      if (!parameters.forward.discretization.fully_fixed(label))
+        return;
+    throw InputError(prm_file,
+                     "Boundary conditions/Fixed labels",
+                     "every label of the mesh (" + to_string(mesh->labels()) +
+                       ") is fixed in all three directions: nothing is free "
+                       "to move; expected at least one label that is not");
   }
 
   void

@@ -16,6 +16,7 @@
 #include <restshape/base/input_error.h>
 #include <restshape/base/parameter_names.h>
 #include <restshape/forward/registered_parameters.h>
+#include <restshape/io/output.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -23,6 +24,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -65,9 +68,12 @@ namespace RestShape
     /// One run of the study.
     struct StudyRun
     {
-      std::vector<std::string>    values;
-      std::string                 folder;
-      int                         exit_code = 0;
+      std::vector<std::string> values;
+      std::string              folder;
+      int                      exit_code = 0;
+      /// Why it failed, in one line ("" after a success): summary.json's
+      /// failure, else the program's error line, else the signal.
+      std::string                 reason;
       double                      seconds   = 0;
       double                      memory_mb = 0;
       boost::property_tree::ptree summary;
@@ -123,6 +129,39 @@ namespace RestShape
     /// While a run goes on, a progress line this often (s).
     constexpr double heartbeat_seconds = 60;
 
+    /// A signal that arrived during the study (0: none): passed on to
+    /// the run in progress, then the study ends with 128 + it.
+    volatile std::sig_atomic_t study_signal = 0;
+
+    extern "C" void
+    on_study_signal(const int sig)
+    {
+      study_signal = sig;
+    }
+
+    void
+    install_study_signal_handlers()
+    {
+      struct sigaction action;
+      std::memset(&action, 0, sizeof(action));
+      action.sa_handler = on_study_signal;
+      sigemptyset(&action.sa_mask);
+      for (const int sig : {SIGINT, SIGTERM, SIGHUP})
+        sigaction(sig, &action, nullptr);
+    }
+
+    /// The last line of @p log that says "error:" ("" if none).
+    std::string
+    error_line(const std::string &log)
+    {
+      std::ifstream in(log);
+      std::string   line, last;
+      while (std::getline(in, line))
+        if (line.find("error:") != std::string::npos)
+          last = line;
+      return last;
+    }
+
     /// The last non-empty line of the file @p log ("" if none).
     std::string
     last_line(const std::string &log)
@@ -171,6 +210,13 @@ namespace RestShape
       double        next_report = heartbeat_seconds;
       while (wait4(pid, &status, WNOHANG, &usage) == 0)
         {
+          if (study_signal != 0)
+            {
+              // The run ends with the study, never as an orphan.
+              ::kill(pid, study_signal);
+              wait4(pid, &status, 0, &usage);
+              break;
+            }
           std::this_thread::sleep_for(std::chrono::milliseconds(200));
           if (since() < next_report)
             continue;
@@ -181,7 +227,27 @@ namespace RestShape
         }
       run.seconds   = since();
       run.memory_mb = usage.ru_maxrss / 1024.;
-      run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 3;
+      if (WIFSIGNALED(status))
+        {
+          run.exit_code = 128 + WTERMSIG(status);
+          run.reason    = std::string("killed by signal ") +
+                       std::to_string(WTERMSIG(status)) + " (" +
+                       strsignal(WTERMSIG(status)) + ")";
+        }
+      else
+        run.exit_code = WEXITSTATUS(status);
+    }
+
+    /// The run's reason, once its summary is read.
+    void
+    find_reason(StudyRun &run, const std::string &log)
+    {
+      if (run.exit_code == 0 || !run.reason.empty())
+        return;
+      const std::string line = error_line(log);
+      run.reason             = !line.empty() ?
+                                 line :
+                                 run.summary.get<std::string>("failure", "no error line");
     }
 
     /// The columns of @p keys that some run reports.
@@ -229,9 +295,8 @@ namespace RestShape
       std::ostringstream text;
       text << std::setprecision(3);
       if (run.exit_code != 0)
-        text << "FAILED (exit code " << run.exit_code << ": "
-             << last_line(out + "/screen.log") << "; see " << out
-             << "/screen.log), ";
+        text << "FAILED (exit code " << run.exit_code << ": " << run.reason
+             << "; see " << out << "/screen.log), ";
       else
         text << (run.summary.get<bool>("converged", false) ? "converged, " :
                                                              "done, ");
@@ -271,6 +336,8 @@ namespace RestShape
       for (const std::string &v : axis.values)
         apply_override(prm, axis.parameter + "=" + v, "--study");
     ensure_writable_directory(directory, "Output/Directory");
+    claim_directory(directory, "Output/Directory");
+    install_study_signal_handlers();
 
     const auto            all = combinations(axes);
     std::vector<StudyRun> runs;
@@ -282,6 +349,8 @@ namespace RestShape
         run.folder            = folder_name(i, axes, all[i]);
         const std::string out = directory + "/" + run.folder;
         std::filesystem::create_directories(out);
+        // An earlier study's results there are never read as this run's.
+        remove_previous_results(out);
         std::vector<std::string> args;
         for (const std::string &o : overrides)
           args.insert(args.end(), {"--set", o});
@@ -312,16 +381,40 @@ namespace RestShape
           {
             // A run that stopped before its summary: its exit code says so.
           }
+        find_reason(run, out + "/screen.log");
         std::cout << name << " finished: " << run_figures(run, out)
                   << std::endl;
         worst = std::max(worst, run.exit_code);
         runs.push_back(run);
+        if (study_signal != 0)
+          {
+            write_study_tables(axes, runs, directory);
+            std::cout << "study: stopped by signal " << int(study_signal)
+                      << " after " << runs.size() << " of " << all.size()
+                      << " runs (the last one stopped with it)" << std::endl;
+            return 128 + study_signal;
+          }
       }
     write_study_tables(axes, runs, directory);
     std::cout << "study: " << runs.size() << " runs; " << directory
               << "/study.csv, study.txt, study_error_vs_time.svg" << std::endl;
     return worst;
   }
+
+  namespace
+  {
+    /// A CSV field: quoted (quotes doubled) if it holds a comma or quote.
+    std::string
+    csv_field(const std::string &text)
+    {
+      if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+      std::string quoted = "\"";
+      for (const char c : text)
+        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+      return quoted + "\"";
+    }
+  } // namespace
 
   void
   write_study_tables(const std::vector<StudyAxis> &axes,
@@ -356,7 +449,7 @@ namespace RestShape
     std::vector<std::vector<std::string>> rows;
     for (const StudyAxis &axis : axes)
       header.push_back(axis.parameter.substr(axis.parameter.rfind('/') + 1));
-    header.insert(header.end(), {"converged", "n_dofs"});
+    header.insert(header.end(), {"exit_code", "converged", "n_dofs"});
     header.insert(header.end(), costs.begin(), costs.end());
     header.insert(header.end(), errors.begin(), errors.end());
     header.insert(header.end(), inverse_errors.begin(), inverse_errors.end());
@@ -364,7 +457,7 @@ namespace RestShape
                   {"max_displacement_mm", "displacement_difference_to_finest"});
     if (any_rest)
       header.push_back("rest_shape_difference_to_finest");
-    header.insert(header.end(), {"wall_seconds", "peak_memory_MB"});
+    header.insert(header.end(), {"wall_seconds", "peak_memory_MB", "reason"});
     const auto text = [](const std::optional<double> &x) {
       if (!x)
         return std::string("-");
@@ -377,6 +470,7 @@ namespace RestShape
         const StudyRun          &run = runs[r];
         std::vector<std::string> row = {run.folder};
         row.insert(row.end(), run.values.begin(), run.values.end());
+        row.push_back(std::to_string(run.exit_code));
         row.push_back(run.summary.get<std::string>("converged", "false"));
         row.push_back(text(run.number("n_dofs")));
         for (const auto *keys : {&costs, &errors, &inverse_errors})
@@ -390,6 +484,7 @@ namespace RestShape
                                       text(difference[r].rest_shape));
         row.push_back(text(run.seconds));
         row.push_back(text(run.memory_mb));
+        row.push_back(run.reason.empty() ? "-" : run.reason);
         for (unsigned int c = 0; c < header.size(); ++c)
           table.add_value(header[c], row[c]);
         rows.push_back(row);
@@ -403,7 +498,7 @@ namespace RestShape
         for (const auto &row : rows)
           {
             for (unsigned int c = 0; c < row.size(); ++c)
-              out << (c ? "," : "") << row[c];
+              out << (c ? "," : "") << csv_field(row[c]);
             out << '\n';
           }
       },

@@ -1,6 +1,8 @@
+#include <fcntl.h>
 #include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/interruption.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -86,6 +88,58 @@ namespace RestShape
         throw InputError(path,
                          parameter,
                          "cannot rename into place: " + ec.message());
+      }
+  }
+
+  void
+  write_on_every_rank(const MPI_Comm               comm,
+                      const std::string           &file,
+                      const std::function<void()> &write,
+                      const bool                   this_rank_writes)
+  {
+    std::string error;
+    if (this_rank_writes)
+      try
+        {
+          write();
+        }
+      catch (const InputError &e)
+        {
+          error = e.message;
+        }
+    for (const std::string &e : dealii::Utilities::MPI::all_gather(comm, error))
+      if (!e.empty())
+        throw OutputFailure(file + ": cannot write the results: " + e);
+  }
+
+  void
+  claim_directory(const std::string &directory, const std::string &parameter)
+  {
+    const std::string lock = directory + "/.restshape.lock";
+    const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+      throw InputError(directory,
+                       parameter,
+                       std::string("cannot create its lock file: ") +
+                         std::strerror(errno));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      {
+        char      owner[32] = {0};
+        const int n         = ::pread(fd, owner, sizeof(owner) - 1, 0);
+        ::close(fd);
+        throw InputError(directory,
+                         parameter,
+                         "another run (process " +
+                           std::string(n > 0 ? owner : "?") +
+                           ") is writing its results there; expected an "
+                           "output directory no other run uses");
+      }
+    // Held (fd left open) until this process ends.
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(fd, 0) == 0)
+      {
+        const ssize_t written = ::pwrite(fd, pid.c_str(), pid.size(), 0);
+        (void)written;
       }
   }
 

@@ -119,6 +119,10 @@ namespace RestShape
       sigaddset(&action.sa_mask, sig);
     for (const int sig : signals)
       sigaction(sig, &action, nullptr);
+    // A closed stdout (restshape ... | head) is not a reason to lose the
+    // results: writes to it fail (EPIPE) instead of killing the run, and
+    // main() reports the lost screen output at the end.
+    std::signal(SIGPIPE, SIG_IGN);
   }
 
   InterruptionsDeferred::InterruptionsDeferred()

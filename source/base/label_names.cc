@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/input_file.h>
 #include <restshape/base/label_names.h>
 #include <restshape/base/parameter_names.h>
 
@@ -105,12 +106,8 @@ namespace RestShape
   LabelNames
   read_label_names(const std::string &file, const std::string &option)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file,
-                       option,
-                       "cannot read the file; expected a table of "
-                       "'label name' lines");
+    std::ifstream in =
+      open_input(file, option, "a table of 'label name' lines");
     LabelNames   names;
     std::string  line;
     unsigned int line_number = 0;

@@ -2,6 +2,8 @@
 // normals, forces and the contacts it keeps.
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
 
 #include <restshape/base/input_error.h>
 #include <restshape/base/mpi_reductions.h>
@@ -9,6 +11,7 @@
 #include <restshape/contact/admissible_target.h>
 #include <restshape/contact/contact_report.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -56,6 +59,8 @@ namespace RestShape
     if (!too_many && clearance <= size)
       {
         check_fixed_labels_enclosed(deep_fraction * size);
+        if (!contact.parameters.inside && shift == nullptr)
+          check_obstacle_outside_body();
         return;
       }
     const auto box = [](const Point<3> &a, const Point<3> &b) {
@@ -104,6 +109,88 @@ namespace RestShape
                        number_text(mm_per_m * size) + " mm" + boxes +
                        "): no contact can occur; expected the obstacle near "
                        "the body (check Contact/Length unit)");
+  }
+
+  void
+  AdmissibleTarget::check_obstacle_outside_body() const
+  {
+    // Each vertex is tested a little (this fraction of the body's size)
+    // towards the obstacle's centroid: a vertex on the body's surface (a
+    // floor it stands on) then lies outside the body, one on a face
+    // between two cells inside one of them.
+    constexpr double        nudge = 1e-6;
+    const Triangulation<3> &tria =
+      contact.discretization.dof_handler().get_triangulation();
+    std::vector<Point<3>> positions;
+    for (const Node &node : contact.discretization.relevant_nodes())
+      positions.push_back(node.position);
+    if (positions.empty())
+      positions.push_back(Point<3>());
+    const BoundingBox<3>        body(positions);
+    GridTools::Cache<3>         cache(tria, contact.discretization.mapping());
+    double                      found[4] = {0, 0, 0, 0}; // count, x, y, z
+    const std::vector<Point<3>> vertices = contact.obstacle->vertices();
+    Point<3>                    centroid;
+    for (const Point<3> &v : vertices)
+      centroid += v / double(vertices.size());
+    const double step = nudge * contact.discretization.mesh().diameter();
+    for (const Point<3> &vertex : vertices)
+      {
+        const Tensor<1, 3> to_centre = centroid - vertex;
+        const Point<3>     p         = to_centre.norm() > 0 ?
+                                         vertex + step * to_centre / to_centre.norm() :
+                                         vertex;
+        if (!body.point_inside(p))
+          continue;
+        std::pair<Triangulation<3>::active_cell_iterator, Point<3>> hit;
+        try
+          {
+            hit = GridTools::find_active_cell_around_point(cache, p);
+          }
+        catch (const std::exception &)
+          {
+            continue; // not in this rank's cells
+          }
+        const auto &[cell, unit] = hit;
+        if (cell.state() == IteratorState::valid && cell->is_locally_owned() &&
+            cell->reference_cell().contains_point(unit))
+          {
+            if (found[0] == 0)
+              for (unsigned int d = 0; d < 3; ++d)
+                found[1 + d] = vertex[d];
+            ++found[0];
+          }
+      }
+    const MPI_Comm comm = contact.communicator();
+    const double   n    = Utilities::MPI::sum(found[0], comm);
+    if (n == 0)
+      return;
+    // The first rank's vertex, on every rank.
+    const auto all = Utilities::MPI::all_gather(
+      comm, std::array<double, 4>{{found[0], found[1], found[2], found[3]}});
+    Point<3> where;
+    for (const auto &a : all)
+      if (a[0] > 0)
+        {
+          where = Point<3>(a[1], a[2], a[3]);
+          break;
+        }
+    char buffer[200];
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "%.0f of its %zu vertices lie inside the body, the first at "
+                  "(%.4g, %.4g, %.4g) mm",
+                  n,
+                  vertices.size(),
+                  mm_per_m * where[0],
+                  mm_per_m * where[1],
+                  mm_per_m * where[2]);
+    throw InputError(contact.parameters.obstacle_file,
+                     "Contact/Obstacle file",
+                     std::string(buffer) +
+                       ": with Contact/Side = outside the body must start "
+                       "outside the obstacle; expected an obstacle that "
+                       "does not overlap the mesh (or Side = inside)");
   }
 
   void

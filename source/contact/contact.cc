@@ -7,6 +7,7 @@
 
 #include <restshape/base/input_error.h>
 #include <restshape/contact/contact.h>
+#include <restshape/mesh/cavity_walls.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,10 @@ namespace RestShape
                          update_normal_vectors);
     std::vector<types::global_dof_index>            dofs(fe.n_dofs_per_cell());
     const auto &constraints = discretization.base_constraints();
+    // The walls of cavities inside the body (ventricles) can never touch
+    // an obstacle around it: they are no candidates (nor searched).
+    const CavityWalls cavities(discretization.mesh());
+    n_cavity_wall_faces = 0;
 
     for (const auto &cell :
          discretization.dof_handler().active_cell_iterators())
@@ -83,6 +88,11 @@ namespace RestShape
           {
             if (!discretization.mesh().at_surface(*cell, f))
               continue;
+            if (cavities.n_cavities() > 0 && cavities.contains(*cell, f))
+              {
+                n_cavity_wall_faces += cell->is_locally_owned();
+                continue;
+              }
             cell->get_dof_indices(dofs);
             fv.reinit(cell, f);
             double              face_area = 0, mass_sum = 0;

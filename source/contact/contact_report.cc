@@ -171,6 +171,13 @@ namespace RestShape
   }
 
   unsigned int
+  ContactReport::n_cavity_wall_faces() const
+  {
+    return Utilities::MPI::sum(contact.n_cavity_wall_faces,
+                               contact.communicator());
+  }
+
+  unsigned int
   ContactReport::n_outside() const
   {
     return contact.count_owned([this](const ContactProblem::Candidate &c) {

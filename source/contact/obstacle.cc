@@ -328,6 +328,20 @@ namespace RestShape
     return data->mesh.number_of_faces();
   }
 
+  std::vector<dealii::Point<3>>
+  Obstacle::vertices() const
+  {
+    std::vector<dealii::Point<3>> points;
+    for (const auto v : data->mesh.vertices())
+      {
+        const auto &p = data->mesh.point(v);
+        points.emplace_back(CGAL::to_double(p.x()),
+                            CGAL::to_double(p.y()),
+                            CGAL::to_double(p.z()));
+      }
+    return points;
+  }
+
   std::pair<dealii::Point<3>, dealii::Point<3>>
   Obstacle::bounding_box() const
   {

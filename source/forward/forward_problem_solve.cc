@@ -28,9 +28,17 @@ namespace RestShape
   std::string
   ForwardProblem::compression_text() const
   {
-    const Compression c = most_compressed_cell(*this);
-    char              text[64];
-    std::snprintf(text, sizeof(text), "det F = %.3g, ", c.det_F);
+    // A volume ratio of 1 (or more) compresses nothing: it says so.
+    constexpr double  uncompressed = 0.999;
+    const Compression c            = most_compressed_cell(*this);
+    char              text[96];
+    std::snprintf(text,
+                  sizeof(text),
+                  c.det_F < uncompressed ?
+                    "its equilibrium compresses cells to det F = %.3g, " :
+                    "no cell of its equilibrium is compressed: smallest "
+                    "det F = %.3g, ",
+                  c.det_F);
     return text + c.where;
   }
 

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <restshape/base/progress.h>
 #include <restshape/base/units.h>
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/stability.h>
@@ -30,12 +31,18 @@ namespace RestShape
     constexpr unsigned int inexact_lanczos_steps   = 10;
     constexpr double       inexact_solve_tolerance = 1e-3;
     constexpr double       exact_negative_fraction = 1e-10;
+    /// The density (kg/m^3) of the mass the modes are measured against in
+    /// cells whose Materials/Density is 0: any positive mass gives the
+    /// same signs of the eigenvalues (stable or not); water's is the
+    /// scale of tissue's.
+    constexpr double reference_density = 1000;
 
     /// The HRZ-lumped mass matrix (kg): per cell the diagonal of the
     /// consistent mass, scaled to the cell's mass, per component.
     VectorType
-    lumped_mass(const ForwardProblem &forward)
+    lumped_mass(const ForwardProblem &forward, bool &reference_mass)
     {
+      reference_mass          = false;
       VectorType         mass = forward.discretization().zero_vector();
       FEValues<3>        fv(forward.discretization().mapping(),
                      forward.discretization().fe(),
@@ -50,9 +57,13 @@ namespace RestShape
           {
             fv.reinit(cell);
             cell->get_dof_indices(dofs);
-            const double rho =
-              forward.materials().density(cell->material_id()) *
-              forward.discretization().mesh().mass_ratio(*cell);
+            double rho = forward.materials().density(cell->material_id()) *
+                         forward.discretization().mesh().mass_ratio(*cell);
+            if (!(rho > 0))
+              {
+                rho            = reference_density;
+                reference_mass = true;
+              }
             double volume = 0, sum = 0;
             diagonal = 0;
             for (const unsigned int q : fv.quadrature_point_indices())
@@ -70,6 +81,9 @@ namespace RestShape
               mass[dofs[i]] += rho * volume * diagonal[i] / (sum / 3);
           }
       mass.compress(VectorOperation::add);
+      reference_mass = Utilities::MPI::logical_or(
+        reference_mass,
+        forward.discretization().dof_handler().get_communicator());
       return mass;
     }
 
@@ -133,6 +147,34 @@ namespace RestShape
   }
 
   std::string
+  StabilityResult::mass_text() const
+  {
+    if (!reference_mass)
+      return "";
+    char buffer[160];
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "eigenvalues against a mass of %g kg/m^3 where "
+                  "Materials/Density is 0",
+                  reference_density);
+    return buffer;
+  }
+
+  std::string
+  free_dofs_missing(const ForwardProblem &forward)
+  {
+    const AffineConstraints<double> &c = forward.newton_constraints();
+    unsigned long                    n = 0;
+    for (const auto i : forward.discretization().locally_owned_dofs())
+      n += !c.is_constrained(i);
+    n = Utilities::MPI::sum(
+      n, forward.discretization().dof_handler().get_communicator());
+    return n == 0 ? "no free degree of freedom: every node is fixed or "
+                    "constrained" :
+                    "";
+  }
+
+  std::string
   StabilityResult::variant_text() const
   {
     if (exact_solves)
@@ -150,7 +192,8 @@ namespace RestShape
   check_stability(ForwardProblem &forward)
   {
     const AffineConstraints<double> constraints = homogeneous(forward);
-    VectorType                      M           = lumped_mass(forward);
+    StabilityResult                 result;
+    VectorType M = lumped_mass(forward, result.reference_mass);
     // Constrained DoFs carry no mass: their modes are infinitely stiff.
     for (const auto i : forward.discretization().locally_owned_dofs())
       if (constraints.is_constrained(i))
@@ -165,9 +208,8 @@ namespace RestShape
     constraints.distribute(q);
     q /= std::sqrt(dot(q, M, q));
 
-    const bool         exact = forward.tangent_solves_are_exact();
-    const unsigned int steps = exact ? lanczos_steps : inexact_lanczos_steps;
-    StabilityResult    result;
+    const bool         exact  = forward.tangent_solves_are_exact();
+    const unsigned int steps  = exact ? lanczos_steps : inexact_lanczos_steps;
     result.exact_solves       = exact;
     std::vector<VectorType> Q = {q};
     std::vector<double>     alpha, beta;
@@ -177,6 +219,9 @@ namespace RestShape
       {
         // z = K^-1 M q_j, then into the constrained space. (M is zero at
         // constrained DoFs, so M q_j has nothing to condense onto them.)
+        set_progress_phase("stability check: Lanczos step " +
+                           std::to_string(j + 1) + " of at most " +
+                           std::to_string(steps));
         b = Q[j];
         b.scale(M);
         z = 0;

@@ -1,6 +1,7 @@
 // DirectInverse: Jacobian-free Newton on the equilibrium at the target
 // with the rest shape as unknown (see direct_inverse.h).
 #include <restshape/base/input_error.h>
+#include <restshape/base/progress.h>
 #include <restshape/inverse/direct_inverse.h>
 #include <restshape/inverse/flexible_gmres.h>
 #include <restshape/solver/newton_watchdog.h>
@@ -254,11 +255,16 @@ namespace RestShape
     // for small strains, and R's sign makes the product with dR/dw near
     // identity): factorised, or an inner CG + AMG solve. If GMRES stops at
     // max_gmres_steps, the line search judges the best iterate so far.
-    VectorType                trial = forward.discretization().zero_vector();
+    VectorType                trial    = forward.discretization().zero_vector();
+    unsigned int              products = 0;
     const FlexibleGmresResult gmres =
       FlexibleGmres(max_gmres_steps)
         .solve(
           [&](VectorType &dst, const VectorType &src) {
+            set_progress_phase("direct inverse, Newton step " +
+                               std::to_string(result.newton_steps + 1) +
+                               ": Jacobian product " +
+                               std::to_string(++products) + " (GMRES)");
             jacobian_product(w, r, src, trial, dst);
           },
           [&](VectorType &dst, const VectorType &src) {

@@ -3,11 +3,13 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <restshape/base/atomic_file.h>
+#include <restshape/base/input_error.h>
 #include <restshape/forward/forward_results.h>
 #include <restshape/io/output.h>
 #include <restshape/io/vtu_cell_data.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <regex>
@@ -115,9 +117,9 @@ namespace RestShape
     namespace fs = std::filesystem;
     static const std::regex ours(
       "summary\\.json|parameters\\.prm|solution\\.(pvd|visit)|"
-      "(solution-[0-9]+|prestressed_state|scenario)(\\.[0-9]+)?\\.(vtu|pvtu)|"
+      "(solution-[0-9]+|prestressed_state|scenario(_[^/]+)?)(\\.[0-9]+)?\\.(vtu|pvtu)|"
       "iterations\\.csv|convergence\\.(csv|txt)|nodes\\.csv|"
-      "rest_shape\\.msh|prestress_comparison\\.csv|scenario\\.csv|label_names\\.txt|"
+      "rest_shape\\.msh|prestress_comparison\\.csv|scenario(_[^/]+)?\\.csv|label_names\\.txt|"
       ".*\\.tmp-[0-9]+");
     std::error_code ec;
     for (const auto &entry : fs::directory_iterator(directory, ec))
@@ -135,13 +137,70 @@ namespace RestShape
     return false;
   }
 
+  namespace
+  {
+    /// The length of the valid UTF-8 sequence at @p i of @p text (0: the
+    /// byte there does not begin one).
+    std::size_t
+    utf8_length(const std::string &text, const std::size_t i)
+    {
+      const auto        b = static_cast<unsigned char>(text[i]);
+      const std::size_t n = b >= 0xf0 && b <= 0xf4 ? 4 :
+                            b >= 0xe0              ? 3 :
+                            b >= 0xc2 && b < 0xe0  ? 2 :
+                                                     0;
+      if (n == 0 || i + n > text.size())
+        return 0;
+      for (std::size_t k = 1; k < n; ++k)
+        if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80)
+          return 0;
+      return n;
+    }
+  } // namespace
+
+  void
+  write_json_string(std::ostream &out, const std::string &text)
+  {
+    out << '"';
+    for (std::size_t i = 0; i < text.size(); ++i)
+      {
+        const char c = text[i];
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\')
+          out << '\\' << c;
+        else if (c == '\n')
+          out << "\\n";
+        else if (c == '\t')
+          out << "\\t";
+        else if (u >= 0x20 && u < 0x7f)
+          out << c;
+        else if (const std::size_t n = u > 0x7f ? utf8_length(text, i) : 0;
+                 n > 0)
+          {
+            out << text.substr(i, n);
+            i += n - 1;
+          }
+        else
+          {
+            // A control character, or a byte that is not UTF-8 (as
+            // Latin-1).
+            char code[8];
+            std::snprintf(code, sizeof(code), "\\u%04x", unsigned(u));
+            out << code;
+          }
+      }
+    out << '"';
+  }
+
   void
   Summary::write(std::ostream &out) const
   {
     out << "{\n";
     for (unsigned int i = 0; i < entries.size(); ++i)
       {
-        out << "  \"" << entries[i].first << "\": ";
+        out << "  ";
+        write_json_string(out, entries[i].first);
+        out << ": ";
         const Value &v = entries[i].second;
         if (const double *x = std::get_if<double>(&v))
           write_number(out, *x);
@@ -150,13 +209,7 @@ namespace RestShape
         else if (const bool *b = std::get_if<bool>(&v))
           out << (*b ? "true" : "false");
         else if (const std::string *s = std::get_if<std::string>(&v))
-          {
-            out << '"';
-            for (const char c : *s)
-              out << ((c == '"' || c == '\\') ? std::string("\\") + c :
-                                                std::string(1, c));
-            out << '"';
-          }
+          write_json_string(out, *s);
         else
           {
             const auto &t = std::get<Tensor<1, 3>>(v);
@@ -192,8 +245,27 @@ namespace RestShape
     const std::string                         &name,
     const std::function<void(std::ostream &)> &write) const
   {
+    write_on_every_rank(
+      comm,
+      path(name),
+      [&]() { write_file_atomically(path(name), write); },
+      Utilities::MPI::this_mpi_process(comm) == 0);
+  }
+
+  void
+  OutputWriter::try_write_text(
+    const std::string                         &name,
+    const std::function<void(std::ostream &)> &write) const
+  {
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_file_atomically(path(name), write);
+      try
+        {
+          write_file_atomically(path(name), write);
+        }
+      catch (const InputError &)
+        {
+          // The run already fails for a reason of its own.
+        }
   }
 
   void
@@ -306,11 +378,17 @@ namespace RestShape
       pieces.push_back(n_ranks == 1 ?
                          base + ".vtu" :
                          base + "." + Utilities::int_to_string(r, 4) + ".vtu");
-    write_file_atomically(path(pieces[rank]), [&](std::ostream &out) {
-      std::ostringstream vtu;
-      data_out.write_vtu(vtu);
-      out << add_cell_data(vtu.str(), cell_data);
-    });
+    write_on_every_rank(
+      comm,
+      path(pieces[rank]),
+      [&]() {
+        write_file_atomically(path(pieces[rank]), [&](std::ostream &out) {
+          std::ostringstream vtu;
+          data_out.write_vtu(vtu);
+          out << add_cell_data(vtu.str(), cell_data);
+        });
+      },
+      true);
     std::string record = pieces[0];
     if (n_ranks > 1)
       {

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/input_file.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/mesh_file_reading.h>
 #include <restshape/mesh/mesh_formats.h>
@@ -443,6 +444,9 @@ namespace RestShape
   LabelNames
   read_mesh_label_names(const std::string &file)
   {
+    // Anything but a regular file is reported when the mesh is read.
+    if (!is_regular_input(file))
+      return {};
     const std::string ext = extension(file);
     if (ext == ".msh")
       return read_gmsh_label_names(file);

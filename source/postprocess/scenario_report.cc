@@ -36,6 +36,21 @@ namespace RestShape
   }
 
   void
+  record_scenario_success(Summary &summary, const std::string &name)
+  {
+    summary.set(key(name, "converged"), true);
+  }
+
+  void
+  record_scenario_failure(Summary           &summary,
+                          const std::string &name,
+                          const std::string &reason)
+  {
+    summary.set(key(name, "converged"), false);
+    summary.set(key(name, "failure"), reason);
+  }
+
+  void
   record_scenario_newton(Summary               &summary,
                          const std::string     &name,
                          const SolveStatistics &prestressed,

@@ -86,10 +86,12 @@ namespace RestShape
       if (cell->is_locally_owned())
         points.push_back(cell->center());
 
-    std::array<double, 4> where = {{0, 0, 0, 0}}; // found?, x, y, z
+    // Beyond this (m), the squares and integrals of the errors overflow.
+    constexpr double      largest_value = 1e100;
+    std::array<double, 4> where         = {{0, 0, 0, 0}}; // found?, x, y, z
     for (const Point<3> &p : points)
       for (unsigned int c = 0; c < 3 && where[0] == 0; ++c)
-        if (!std::isfinite(function->value(p, c)))
+        if (!(std::abs(function->value(p, c)) <= largest_value))
           where = {{1, p[0], p[1], p[2]}};
     const auto comm = tria.get_communicator();
     if (Utilities::MPI::max(where[0], comm) == 0)
@@ -104,7 +106,8 @@ namespace RestShape
     throw InputError("",
                      parameter,
                      "the expressions give a value that is not a finite "
-                     "number at " +
+                     "number (or beyond 1e100 m, whose square overflows) "
+                     "at " +
                        at.str() +
                        "; expected an exact solution defined on the whole "
                        "mesh");

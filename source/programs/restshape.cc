@@ -20,6 +20,7 @@
 #include <restshape/base/interruption.h>
 #include <restshape/base/mpi_start.h>
 #include <restshape/base/parameter_names.h>
+#include <restshape/base/progress.h>
 #include <restshape/base/version.h>
 #include <restshape/forward/registered_parameters.h>
 #include <restshape/loads/load_registry.h>
@@ -147,7 +148,9 @@ main(int argc, char **argv)
   install_interrupt_handlers();
   const MPI_Comm comm = MPI_COMM_WORLD;
   const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-  std::string    prm_file;
+  // A line at least every few seconds, whatever runs (doc/model.md).
+  const ProgressHeartbeat heartbeat(root, progress_silence_from_environment());
+  std::string             prm_file;
 
   try
     {
@@ -233,6 +236,17 @@ main(int argc, char **argv)
       }
       if (error)
         std::rethrow_exception(error);
+      if (!std::cout.good())
+        {
+          if (root)
+            std::cerr << "restshape: error: " << prm_file
+                      << ": the screen output could not be written (stdout "
+                         "was closed: broken pipe); the results in "
+                      << parameters.output.directory
+                      << " are complete (summary.json: screen_output)"
+                      << std::endl;
+          return 5;
+        }
     }
   catch (const InputError &exc)
     {
@@ -247,6 +261,20 @@ main(int argc, char **argv)
         std::cerr << "restshape: error: " << prm_file << ": " << exc.what()
                   << std::endl;
       return 2;
+    }
+  catch (const OutputFailure &exc)
+    {
+      if (root)
+        std::cerr << "restshape: error: " << prm_file << ": " << exc.what()
+                  << "; the partial results are removed" << std::endl;
+      return 5;
+    }
+  catch (const ScenarioFailure &exc)
+    {
+      if (root)
+        std::cerr << "restshape: error: " << prm_file << ": " << exc.what()
+                  << std::endl;
+      return 4;
     }
   catch (const std::exception &exc)
     {

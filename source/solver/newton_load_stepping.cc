@@ -33,12 +33,15 @@ namespace RestShape
     // is, then what failed beyond it: steps that inverted cells (with one
     // of them), and the last failure.
     std::string text =
-      format_text("gave up at %.4f of the full load "
-                  "(its equilibrium compresses cells to ",
-                  stats.fraction) +
-      system.compression_text() + ") after " + std::to_string(halvings - 1) +
-      " halvings of the load increment: " + std::to_string(failed.count) +
-      " failed attempts";
+      stats.fraction == 0 ?
+        format_text("gave up before any load step converged (the first "
+                    "increment: %.4g of the full load)",
+                    1. / parameters.initial_load_steps) :
+        format_text("gave up at %.4f of the full load (", stats.fraction) +
+          system.compression_text() + ")";
+    text += " after " + std::to_string(halvings - 1) +
+            " halvings of the load increment: " + std::to_string(failed.count) +
+            " failed attempts";
     if (failed.inverting > 0)
       text +=
         ", " + std::to_string(failed.inverting) +

@@ -2,6 +2,7 @@
 // tolerances) for a NewtonSystem, with an optional active set (contact).
 
 #include <restshape/base/format_text.h>
+#include <restshape/base/progress.h>
 #include <restshape/solver/newton_progress.h>
 #include <restshape/solver/newton_solver.h>
 
@@ -400,6 +401,8 @@ namespace RestShape
           << (shift > 0 ? format_text(", shift %.0e", shift) : std::string())
           << (ls.let_through ? ", on trial (the energy rose)" : "")
           << std::endl;
+    set_progress_phase("Newton step " + std::to_string(it + 1) +
+                       ": assembly and linear solve");
   }
 
   std::string

@@ -10,7 +10,8 @@
 namespace RestShape
 {
   /// Cells, DoFs and memory of a run on a mesh of @p cells_read cells after
-  /// Mesh/Global refinements, estimated from the element and cell type.
+  /// Mesh/Global refinements and @p cycles refinement cycles, estimated
+  /// from the element and cell type and the number of MPI ranks.
   struct RunSize
   {
     double cells;
@@ -23,12 +24,15 @@ namespace RestShape
   };
 
   RunSize
-  estimate_run_size(const std::size_t cells_read, const Parameters &parameters);
+  estimate_run_size(const std::size_t  cells_read,
+                    const Parameters  &parameters,
+                    const unsigned int cycles);
 
   /**
-   * Throws InputError naming Mesh/Global refinements if the refined mesh
-   * cannot fit the machine's memory; prints the estimate on rank 0 when
-   * the mesh is refined.
+   * Throws InputError naming Mesh/Global refinements (or Adaptive
+   * refinement/Cycles, if the mesh fits without them) if the refined mesh
+   * cannot fit the available memory (the machine's, its cgroup's limit,
+   * ulimit -v); prints the estimate on rank 0 when the mesh is refined.
    */
   void
   check_run_size(const std::size_t  cells_read,

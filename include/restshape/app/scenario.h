@@ -11,7 +11,6 @@
 #include <restshape/io/output.h>
 #include <restshape/mesh/labelled_mesh.h>
 
-#include <functional>
 #include <map>
 
 namespace RestShape
@@ -47,15 +46,12 @@ namespace RestShape
    *      alone (changed - scene), as the paper's Table 1 does;
    * and report the shift of each from X + d_eq, tissue by tissue. The
    * forward problem (and the contact) are left at the equilibrium again,
-   * for the next scenario.
+   * for the next scenario, whether this one converged or not: a scenario
+   * fails alone.
    */
   class Scenario
   {
   public:
-    /// @p fail: records a model's failed solve (summary.json) and throws.
-    using Failure =
-      std::function<void(const SolveStatistics &, const std::string &model)>;
-
     Scenario(const Parameters                 &parameters,
              const ScenarioParameters         &scenario,
              ForwardProblem                   &forward,
@@ -64,18 +60,24 @@ namespace RestShape
              Summary                          &summary,
              const dealii::ConditionalOStream &pcout);
 
-    void
-    run(const Failure &fail);
+    /// Solves both models and reports them; false if a solve failed (it
+    /// is recorded in summary.json as NAME_converged = false with
+    /// NAME_failure, and failure() says which model and why).
+    bool
+    run();
+
+    /// "pre-stressed model: gave up at ...", empty after a success.
+    const std::string &
+    failure() const;
 
   private:
     /// The pre-stressed model from its equilibrium (displacement @p w_rest
     /// from the rest shape) under @p changed; with no change and no
-    /// opening it stays. Calls @p fail if the solve fails.
+    /// opening it stays.
     SolveStatistics
     solve_pre_stressed(const LoadState  &changed,
                        const LoadState  &change,
-                       const VectorType &w_rest,
-                       const Failure    &fail);
+                       const VectorType &w_rest);
     /// The stress-free model, resting at the equilibrium @p d_eq with the
     /// contact set @p start_set, under the change alone: its shift from
     /// @p d_eq into @p shift. With no change it stays (shift 0).
@@ -83,8 +85,14 @@ namespace RestShape
     solve_stress_free(const LoadState             &change,
                       const VectorType            &d_eq,
                       const ContactProblem::State &start_set,
-                      const Failure               &fail,
                       VectorType                  &shift);
+    /// forward.solve(), with a linear solver's failure (SolverFailure) as
+    /// a failed solve.
+    SolveStatistics
+    solve(const LoadState &load, const VectorType &rest);
+    /// Records the failed solve @p s of @p model; returns false.
+    bool
+    failed(const SolveStatistics &s, const std::string &model);
     /// The CSV, the VTU (with the pre-stressed model's @p contact_fields),
     /// the summary and the screen table.
     void
@@ -104,6 +112,7 @@ namespace RestShape
     const dealii::ConditionalOStream &pcout;
     /// Contact nodes and pressure faces in the craniotomy.
     unsigned int opened_nodes = 0, opened_faces = 0;
+    std::string  failure_text;
   };
 } // namespace RestShape
 

@@ -22,6 +22,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace RestShape
 {
@@ -58,6 +60,9 @@ namespace RestShape
     /// scenarios.
     void
     check_scene_on_mesh() const;
+    /// InputError when every label is fixed in all directions.
+    void
+    check_something_is_free() const;
     /// Those that need the forward problem: stability with a
     /// non-symmetric tangent, unheld pieces, unfixed components.
     void
@@ -115,8 +120,16 @@ namespace RestShape
     /// stability = false, or a tangent that is not symmetric.
     std::string
     stability_not_checked_because() const;
-    /// Scenario/Enabled: both models under what the scenario changes.
-    void
+    /// Every scenario, each from the equilibrium; the sections of those
+    /// that did not converge. summary.json: scenarios_converged.
+    std::vector<std::string>
+    run_scenarios();
+    /// One line for ScenarioFailure: which scenarios failed.
+    std::string
+    scenario_failure_text(const std::vector<std::string> &failed) const;
+    /// Scenario/Enabled: both models under what the scenario changes;
+    /// false if it did not converge (the next one still runs).
+    bool
     run_scenario(const ScenarioParameters &scenario);
     void
     postprocess(const unsigned int cycle, const SolveStatistics &stats);

@@ -4,6 +4,8 @@
 #ifndef restshape_atomic_file_h
 #define restshape_atomic_file_h
 
+#include <deal.II/base/mpi.h>
+
 #include <functional>
 #include <ostream>
 #include <string>
@@ -65,6 +67,28 @@ namespace RestShape
     /// (staging name, final name)
     std::vector<std::pair<std::string, std::string>> files;
   };
+
+  /**
+   * Runs @p write (which writes @p file) where @p this_rank_writes; a
+   * failure to write (InputError) on any rank is an OutputFailure naming
+   * @p file on every rank of @p comm, so that no rank waits for another.
+   */
+  void
+  write_on_every_rank(const MPI_Comm               comm,
+                      const std::string           &file,
+                      const std::function<void()> &write,
+                      bool                         this_rank_writes);
+
+  /**
+   * Make this process the one owner of @p directory for as long as it
+   * runs: an exclusive lock (flock) on @p directory/.restshape.lock, held
+   * until the process ends (the kernel releases it even after SIGKILL).
+   * Throws InputError naming @p parameter if another process holds it
+   * (with its pid): two runs into one directory would mix their results.
+   */
+  void
+  claim_directory(const std::string &directory,
+                  const std::string &parameter = "Output/Directory");
 
   /**
    * Create @p directory (and parents) if needed and check that files can be

@@ -39,6 +39,29 @@ namespace RestShape
   };
 
   /**
+   * The results could not be written once the run had begun (disk full,
+   * the output directory removed, a closed stdout). Raised on every rank
+   * alike. main() removes the partial results, records the failure in
+   * summary.json where it still can, prints one line and exits with 5.
+   */
+  class OutputFailure : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * One or more scenarios did not converge, while the rest shape (or the
+   * forward equilibrium) did and its results are written. main() prints
+   * it as one line and exits with 4.
+   */
+  class ScenarioFailure : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
    * The "additional information" part of a deal.II exception (or what() of
    * any other exception), squeezed onto one line.
    */

@@ -75,6 +75,12 @@ namespace RestShape
 
 
   private:
+    /// Part of check_placement() for Side = outside: no vertex of the
+    /// obstacle lies inside the body (an obstacle inside it has no
+    /// candidate on its wrong side, yet overlaps it). InputError naming
+    /// the vertex otherwise.
+    void
+    check_obstacle_outside_body() const;
     /// Part of check_placement(): every vertex of a fixed label is on the
     /// allowed side, or less than @p depth (m) beyond it.
     void

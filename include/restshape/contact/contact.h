@@ -364,11 +364,13 @@ namespace RestShape
 
     std::vector<Candidate> candidates;
     std::vector<Face>      faces;
-    double                 c_scaled = 0;
-    std::set<std::size_t>  history;
-    double                 h_min           = 0;
-    bool                   releases_frozen = false;
-    bool                   one_sided       = false;
+    /// Owned surface faces on cavity walls, left out of the candidates.
+    unsigned int          n_cavity_wall_faces = 0;
+    double                c_scaled            = 0;
+    std::set<std::size_t> history;
+    double                h_min           = 0;
+    bool                  releases_frozen = false;
+    bool                  one_sided       = false;
     /// Constraints changed outside update_active_set() (a thaw, a round
     /// of enforce_conditions()) since the last update.
     bool         constraints_changed = false;

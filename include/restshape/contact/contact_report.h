@@ -76,6 +76,10 @@ namespace RestShape
     patch_radius(const dealii::Tensor<1, 3> &direction) const;
     unsigned int
     n_candidates() const;
+    /// Surface faces on the walls of cavities inside the body, which are
+    /// not candidates.
+    unsigned int
+    n_cavity_wall_faces() const;
     /// Candidates beyond the obstacle (gap < -g_tol), eligible or not.
     unsigned int
     n_outside() const;

@@ -46,6 +46,10 @@ namespace RestShape
     unsigned int
     n_triangles() const;
 
+    /// The surface's vertices (m).
+    std::vector<dealii::Point<3>>
+    vertices() const;
+
     /// The corners (m) of the obstacle's bounding box.
     std::pair<dealii::Point<3>, dealii::Point<3>>
     bounding_box() const;

@@ -35,6 +35,12 @@ namespace RestShape
     /// Solves by the direct solver (else inexact CG solves: a bounded
     /// variant).
     bool exact_solves = true;
+    /// Some cells have Density = 0: their mass is a reference density's
+    /// (the signs of the eigenvalues do not depend on it).
+    bool reference_mass = false;
+    /// "eigenvalues against a mass of ..." ("" with the real mass).
+    std::string
+    mass_text() const;
     /// How it was computed, for a bounded variant ("" with exact solves).
     std::string
     variant_text() const;
@@ -58,6 +64,11 @@ namespace RestShape
    */
   StabilityResult
   check_stability(ForwardProblem &forward);
+
+  /// Why the check cannot run on @p forward's constrained system ("" if
+  /// it can): no free degree of freedom.
+  std::string
+  free_dofs_missing(const ForwardProblem &forward);
 } // namespace RestShape
 
 #endif

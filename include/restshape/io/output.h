@@ -8,6 +8,7 @@
 
 #include <restshape/forward/forward_problem.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -15,6 +16,11 @@
 
 namespace RestShape
 {
+  /// @p text as a JSON string: quoted, with quotes, backslashes and
+  /// control characters escaped (bytes above 127 pass: UTF-8 stays).
+  void
+  write_json_string(std::ostream &out, const std::string &text);
+
   /// A flat JSON object with keys in insertion order.
   class Summary
   {
@@ -86,6 +92,12 @@ namespace RestShape
     /// 1 / (metres per output length unit).
     double
     length_scale() const;
+
+    /// write_text() on rank 0 alone, not collective, a failure ignored:
+    /// for the summary of a run that already fails.
+    void
+    try_write_text(const std::string                         &name,
+                   const std::function<void(std::ostream &)> &write) const;
 
     /// Write text from rank 0 only, atomically, into the directory.
     void

@@ -27,6 +27,16 @@ namespace RestShape
                          const SolveReductions &reductions);
 
   /// The Newton iterations of the two models.
+  /// NAME_converged = true.
+  void
+  record_scenario_success(Summary &summary, const std::string &name);
+
+  /// NAME_converged = false and NAME_failure = @p reason.
+  void
+  record_scenario_failure(Summary           &summary,
+                          const std::string &name,
+                          const std::string &reason);
+
   void
   record_scenario_newton(Summary               &summary,
                          const std::string     &name,
