@@ -219,7 +219,8 @@ if not QUICK:
     _, err = p.communicate(timeout=HANG)
     time.sleep(1)
     orphans = run(["pgrep", "-f", f"Output/Directory={d}/study"])[1].strip()
-    judge(8, "study_sigterm", p.returncode, "", 143,
+    # An interrupted run owes no error line (README: 128 + the signal).
+    judge(8, "study_sigterm", p.returncode, "interrupted", 143,
           lambda: "" if not orphans else f"orphan runs {orphans}")
 
 # 9: an obstacle inside the body.
