@@ -159,6 +159,12 @@ namespace RestShape
     const DiscretizationParameters &d = parameters.forward.discretization;
     if (!d.formulation_warning.empty())
       pcout << "Warning: " << d.formulation_warning << std::endl;
+    if (d.mixed)
+      pcout << "Formulation: mixed, "
+            << (d.nodal_pressure ?
+                  "the averaged nodal pressure of linear tetrahedra" :
+                  "a pressure constant per cell (its mean dilatation)")
+            << std::endl;
   }
 
   std::set<Label>

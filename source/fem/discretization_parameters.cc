@@ -48,14 +48,20 @@ namespace RestShape
       "How the element carries the volume change. displacement: the "
       "pointwise J = det F of the displacement element (locks as Poisson's "
       "ratio nears 0.5: on a thick shell under pressure, P1 at nu = 0.4977 "
-      "moves 0.29 of the exact displacement). mixed: the volumetric energy "
-      "U(J) = K/2 (ln J)^2 (K the bulk modulus) of each cell's mean "
-      "dilatation, the integral of J over the cell's rest volume (a "
-      "pressure constant per cell, condensed: P2-P0 tetrahedra, Q1-P0 and "
-      "Q2-P0 hexahedra), with the law's isochoric part pointwise; not "
-      "available for linear tetrahedra. auto: mixed where some label's "
-      "Poisson's ratio is 0.49 or above and the element has a mixed form, "
-      "else displacement (with a warning at 0.49 and above).");
+      "moves 0.29 of the exact displacement). mixed: the law's isochoric "
+      "part pointwise and the volumetric energy U(J) = K/2 (ln J)^2 (K the "
+      "bulk modulus) of a volume larger than a point, its pressure "
+      "condensed: on quadratic tetrahedra and on hexahedra each cell's "
+      "mean dilatation, the integral of J over the cell's rest volume (a "
+      "pressure constant per cell: P2-P0, Q1-P0, Q2-P0); on linear "
+      "tetrahedra the averaged nodal pressure (Bonet and Burton 1998, as "
+      "Joldes, Wittek and Miller use for brain shift): each vertex's "
+      "volume, a quarter of each cell around it of the same label, with "
+      "its own U(J), a cell's pressure the mean of its vertices' (its "
+      "stiffness couples the cells around a vertex: about 3 times the "
+      "matrix entries of P1). auto: mixed where some label's Poisson's "
+      "ratio is 0.49 or above, else displacement (with a warning where "
+      "displacement is chosen at 0.49 and above).");
     prm.leave_subsection();
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Fixed labels",
@@ -101,17 +107,10 @@ namespace RestShape
   DiscretizationParameters::resolve_formulation(const double max_nu,
                                                 const bool   simplex)
   {
-    const bool available = !(simplex && degree == 1);
-    const bool locking   = max_nu >= nearly_incompressible;
-    if (formulation_name == "mixed" && !available)
-      throw InputError(
-        "",
-        "Discretization/Formulation",
-        "mixed is not available for linear tetrahedra (their mean "
-        "dilatation is the pointwise one); expected Polynomial degree = 2, "
-        "hexahedra, or Formulation = displacement");
-    mixed = formulation_name == "mixed" ||
-            (formulation_name == "auto" && locking && available);
+    const bool locking = max_nu >= nearly_incompressible;
+    mixed =
+      formulation_name == "mixed" || (formulation_name == "auto" && locking);
+    nodal_pressure = mixed && simplex && degree == 1;
     formulation_warning.clear();
     if (locking && !mixed)
       formulation_warning =
@@ -119,9 +118,6 @@ namespace RestShape
         " (0.49 or above) with the displacement formulation: the elements "
         "lock, the body is too stiff and the rest shape wrong (on a thick "
         "shell under pressure P1 at nu = 0.4977 moves 0.29 of the exact "
-        "displacement); " +
-        (available ? std::string("use Discretization/Formulation = mixed") :
-                     std::string("use Polynomial degree = 2 with "
-                                 "Discretization/Formulation = mixed"));
+        "displacement); use Discretization/Formulation = mixed";
   }
 } // namespace RestShape

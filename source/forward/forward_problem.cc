@@ -64,6 +64,15 @@ namespace RestShape
                                     dsp,
                                     discretization_.base_constraints(),
                                     true);
+    if (parameters.discretization.nodal_pressure)
+      {
+        // Its layout: the buffers' (set up below, the same).
+        BufferType like(discretization_.locally_owned_dofs(),
+                        discretization_.locally_relevant_dofs(),
+                        discretization_.communicator());
+        nodal_volumes.reinit(discretization_.dof_handler(), like);
+        nodal_volumes.add_sparsity(dsp, discretization_.base_constraints());
+      }
     SparsityTools::distribute_sparsity_pattern(
       dsp,
       discretization_.locally_owned_dofs(),
@@ -252,6 +261,23 @@ namespace RestShape
   ForwardProblem::tangent_matrix() const
   {
     return tangent;
+  }
+
+  void
+  ForwardProblem::update_nodal_volumes() const
+  {
+    BufferType d_now(d_buffer), w_now(w_buffer);
+    std::copy(d.begin(), d.end(), d_now.begin());
+    std::copy(w.begin(), w.end(), w_now.begin());
+    d_now.update_ghost_values();
+    w_now.update_ghost_values();
+    nodal_volumes.update(d_now, w_now);
+  }
+
+  double
+  ForwardProblem::nodal_cell_pressure(const unsigned int cell) const
+  {
+    return -nodal_volumes.cell(cell, material_table, 0).pressure;
   }
 
   const VectorType &

@@ -128,6 +128,7 @@ namespace RestShape
     // (a condensed pressure U'(J_mean) constant on the cell), its
     // stiffness U''(J_mean) / V g g^T added below.
     const bool mixed             = parameters.discretization.mixed;
+    const bool nodal             = parameters.discretization.nodal_pressure;
     double     volumetric_factor = 0;
     const auto add_points        = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
@@ -153,7 +154,18 @@ namespace RestShape
             }
         }
       MaterialLaw::Volumetric U;
-      if (mixed)
+      if (mixed && nodal)
+        {
+          // Averaged nodal pressure: the vertices' stiffness is added
+          // patch by patch (NodalVolumes::add_stiffness).
+          const NodalVolumes::CellPressure c =
+            nodal_volumes.cell(copy.cell_index, material_table, V);
+          if (!c.valid)
+            return false;
+          U.dU = c.pressure;
+          copy.energy += c.energy;
+        }
+      else if (mixed)
         {
           U                 = law.volumetric(J_volume / V);
           volumetric_factor = U.d2U / V;
@@ -225,7 +237,7 @@ namespace RestShape
     if (matrix)
       {
         elastic.matrix(copy.cell_matrix);
-        if (mixed)
+        if (mixed && !nodal)
           elastic.add_volumetric_stiffness(copy.cell_matrix, volumetric_factor);
       }
 
@@ -286,6 +298,8 @@ namespace RestShape
                     static_cast<const AffineConstraints<double> *>(
                       &constraints_newton))})
       lookup->reinit(*constraints, *raw_buffer.get_partitioner());
+    if (parameters.discretization.nodal_pressure)
+      nodal_volumes.update(d_buffer, w_buffer);
     current_body_force_varies = load_set.body_force_varies(current_load);
     bool          all_valid   = true;
     double        energy      = 0;
@@ -341,6 +355,15 @@ namespace RestShape
       2 * MultithreadInfo::n_threads(),
       64);
 
+    // The vertices' volumetric stiffness (averaged nodal pressure), where
+    // every cell is valid on every rank (add_stiffness is not collective,
+    // but the matrix's compress below is).
+    const bool valid_everywhere =
+      Utilities::MPI::min(all_valid ? 1 : 0, discretization_.communicator()) ==
+      1;
+    if (matrix && valid_everywhere && parameters.discretization.nodal_pressure)
+      nodal_volumes.add_stiffness(
+        d_buffer, material_table, constraints_newton, tangent, rhs_buffer);
     const auto finish = [](BufferType &buffer, VectorType &v) {
       buffer.compress(VectorOperation::add);
       std::copy(buffer.begin(), buffer.end(), v.begin());
@@ -354,8 +377,7 @@ namespace RestShape
         finish(rhs_buffer, rhs_newton);
       }
     total_energy = Utilities::MPI::sum(energy, discretization_.communicator());
-    if (Utilities::MPI::min(all_valid ? 1 : 0,
-                            discretization_.communicator()) == 1)
+    if (valid_everywhere)
       return true;
     // One inverted cell to name: that of the lowest rank that has one.
     const std::vector<double> mine = {double(inverted.count),

@@ -151,6 +151,9 @@ namespace RestShape
     VolumeFields  result{Vector<float>(n), Vector<float>(n)};
     const Tensor2 I     = unit_symmetric_tensor<3>();
     const bool    mixed = forward.scene_parameters().discretization.mixed;
+    const bool nodal = forward.scene_parameters().discretization.nodal_pressure;
+    if (nodal)
+      forward.update_nodal_volumes();
     for_each_owned_cell_gradients(
       forward,
       update_JxW_values,
@@ -173,8 +176,9 @@ namespace RestShape
           }
         const unsigned int i   = cell->active_cell_index();
         result.volume_ratio[i] = current / rest;
-        result.pressure[i] =
-          mixed ? -law.volumetric(current / rest).dU : pressure / rest;
+        result.pressure[i]     = nodal ? forward.nodal_cell_pressure(i) :
+                                 mixed ? -law.volumetric(current / rest).dU :
+                                         pressure / rest;
       });
     return result;
   }

@@ -23,16 +23,19 @@ namespace RestShape
     /// Discretization/Formulation as written (auto|displacement|mixed).
     std::string formulation_name = "auto";
     /// After resolve_formulation(): whether the volume change is the
-    /// cell's mean dilatation (mixed) or the pointwise one.
+    /// cell's mean dilatation or the vertices' (mixed) or the pointwise
+    /// one.
     bool mixed = false;
+    /// After resolve_formulation(): mixed on linear tetrahedra, the
+    /// averaged nodal pressure (NodalVolumes).
+    bool nodal_pressure = false;
     /// After resolve_formulation(): what the run says about the choice
     /// (empty: nothing to say).
     std::string formulation_warning;
 
     /// Resolve Formulation = auto (mixed where @p max_poissons_ratio is
     /// nearly_incompressible or above and the element has a mixed form)
-    /// and check an explicit choice; @p simplex: tetrahedra. Throws
-    /// InputError for mixed on linear tetrahedra.
+    /// and check an explicit choice; @p simplex: tetrahedra.
     void
     resolve_formulation(const double max_poissons_ratio, const bool simplex);
     /// From this Poisson's ratio on, displacement elements lock.

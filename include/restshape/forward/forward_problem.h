@@ -23,6 +23,7 @@
 #include <restshape/fem/cell_local_indices.h>
 #include <restshape/fem/constraint_lookup.h>
 #include <restshape/fem/discretization.h>
+#include <restshape/fem/nodal_volumes.h>
 #include <restshape/fem/state_reader.h>
 #include <restshape/fem/tangent_scatter.h>
 #include <restshape/forward/forward_parameters.h>
@@ -177,6 +178,14 @@ namespace RestShape
     /// The tangent of the last evaluate(true) or Newton step.
     const MatrixType &
     tangent_matrix() const;
+    /// Mixed formulation on linear tetrahedra: the vertices' volumes at
+    /// the current state, for nodal_cell_pressure(). Collective.
+    void
+    update_nodal_volumes() const;
+    /// The pressure -U'(J) of the owned cell of active index @p cell,
+    /// averaged over its vertices, at update_nodal_volumes()' state (Pa).
+    double
+    nodal_cell_pressure(const unsigned int cell) const;
     /// The contact conditions checked at the end of the last Newton solve
     /// with contact (ActiveSetConstraints::check_conditions()).
     const ContactConditions &
@@ -344,6 +353,9 @@ namespace RestShape
     // vectors (locally relevant entries, element access by an index
     // shift), then copies the sums into the Trilinos vectors above.
     BufferType d_buffer, w_buffer;
+    // Mixed formulation on linear tetrahedra: the vertices' volumes of
+    // the last assembly (or of nodal_cell_pressure()'s state).
+    mutable NodalVolumes nodal_volumes;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
       magnitude_buffer;
     double total_energy = 0; // of the last assembly (J)

@@ -1,0 +1,123 @@
+// The averaged nodal pressure tetrahedron (Bonet and Burton 1998; the
+// linear tetrahedron Joldes, Wittek and Miller use for brain shift): the
+// mixed formulation of linear tetrahedra. Each vertex n carries, per label
+// L of the cells around it, the rest volume V_n = sum_e V_e / 4 and the
+// current volume v_n = sum_e v_e / 4 of those cells, one volume ratio
+// J_n = v_n / V_n, and the volumetric energy sum_L V_nL U_L(J_n), each
+// label L's energy (K_L/2 (ln J)^2) on its share V_nL of the rest volume:
+// a cell's pressure is the mean of its vertices' sum_L V_nL U_L'(J_n) / V_n,
+// constant on the cell, and the stiffness couples every DoF of the cells
+// around a vertex. (A volume ratio per label and vertex, tried first, locks
+// a layer one cell thick: the Lame shell's 2 mm inner label moved 0.40 of
+// the exact cavity displacement at nu = 0.4999, 0.91 with one ratio.)
+#ifndef restshape_fem_nodal_volumes_h
+#define restshape_fem_nodal_volumes_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <restshape/base/linear_algebra_types.h>
+#include <restshape/material/material_table.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace RestShape
+{
+  class NodalVolumes
+  {
+  public:
+    /// The locally owned and ghost cells of @p dof_handler (linear
+    /// tetrahedra of a 3-component element), for vectors of the layout
+    /// of @p like (locally relevant entries).
+    void
+    reinit(const dealii::DoFHandler<3> &dof_handler, const BufferType &like);
+
+    /// Adds to @p dsp the couplings of every DoF of the cells around each
+    /// locally owned vertex (the stiffness of its volume), under
+    /// @p constraints.
+    void
+    add_sparsity(dealii::DynamicSparsityPattern          &dsp,
+                 const dealii::AffineConstraints<double> &constraints) const;
+
+    /// The vertices' rest and current volumes per label at the state
+    /// (d, w), the rest position X + w and the current one X + d
+    /// (ghosted). Collective.
+    void
+    update(const BufferType &d, const BufferType &w);
+
+    /// The pressure U'(J) averaged over a cell's vertices (Pa) and the
+    /// cell's share of the volumetric energy (J); valid is false where a
+    /// vertex's volume ratio is not positive.
+    struct CellPressure
+    {
+      double pressure = 0;
+      double energy   = 0;
+      bool   valid    = true;
+    };
+
+    /// Of the cell of active index @p cell (locally owned), whose rest
+    /// volume is @p rest_volume, with its label's law in @p materials.
+    CellPressure
+    cell(const unsigned int   cell,
+         const MaterialTable &materials,
+         const double         rest_volume) const;
+
+    /// tangent += U''(J_n) / V_n g_n g_n^T for every locally owned vertex
+    /// and label, through @p constraints (inhomogeneities into @p rhs).
+    void
+    add_stiffness(const BufferType                        &d,
+                  const MaterialTable                     &materials,
+                  const dealii::AffineConstraints<double> &constraints,
+                  dealii::TrilinosWrappers::SparseMatrix  &tangent,
+                  BufferType                              &rhs) const;
+
+  private:
+    struct Cell
+    {
+      std::array<dealii::Point<3>, 4>                 vertices;
+      std::array<unsigned int, 12>                    local; // [3 v + c]
+      std::array<dealii::types::global_dof_index, 12> dofs;  // [3 v + c]
+      Label                                           label = 0;
+      double orientation = 1; // sign of the mesh cell's volume
+      bool   owned       = false;
+    };
+
+    /// The signed volume of @p cell at positions vertex + @p u.
+    static double
+    volume(const Cell &cell, const BufferType &u);
+
+    /// dv/du of @p cell at the positions vertex + @p u: [3 v + c].
+    static std::array<double, 12>
+    volume_gradient(const Cell &cell, const BufferType &u);
+
+    /// A vertex's volume ratio, rest volume (m^3), pressure sum_L V_L
+    /// U_L'(J) / V (Pa) and stiffness sum_L V_L U_L''(J) / V^2 (Pa/m^6).
+    struct Vertex
+    {
+      double J = 0, rest = 0, pressure = 0, stiffness = 0;
+      bool   valid = false;
+    };
+    /// Of @p cell's vertex @p v.
+    Vertex
+    vertex(const Cell          &cell,
+           const unsigned int   v,
+           const MaterialTable &materials) const;
+
+    std::vector<Cell> cells;   // owned and ghost
+    std::vector<int>  of_cell; // active index -> cells, or -1
+    // Per locally owned vertex (by its x-DoF's local index / 3 order):
+    // its x-DoF's local index and the cells around it.
+    std::vector<unsigned int>              owned_vertex;
+    std::vector<std::vector<unsigned int>> patches;
+    // Per label: at a vertex's x-DoF the rest volume, at its y-DoF the
+    // current one.
+    std::map<Label, BufferType> volumes;
+  };
+} // namespace RestShape
+
+#endif

@@ -1,0 +1,260 @@
+// NodalVolumes: the vertices' volumes of the averaged nodal pressure
+// tetrahedron, their pressures and their stiffness.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <restshape/fem/nodal_volumes.h>
+
+#include <algorithm>
+
+namespace RestShape
+{
+  using namespace dealii;
+
+  namespace
+  {
+    constexpr unsigned int vertices_per_cell = 4;
+    constexpr unsigned int dofs_per_cell     = 12;
+    // A vertex's share of the volume of a cell around it.
+    constexpr double vertex_share = 1.0 / vertices_per_cell;
+    // The volume of a tetrahedron is a sixth of its edges' triple product.
+    constexpr double tetrahedron_volume = 1.0 / 6.0;
+  } // namespace
+
+  void
+  NodalVolumes::reinit(const DoFHandler<3> &dof_handler, const BufferType &like)
+  {
+    const FiniteElement<3> &fe = dof_handler.get_fe();
+    AssertThrow(fe.n_dofs_per_cell() == dofs_per_cell,
+                ExcMessage("averaged nodal pressure: linear tetrahedra only"));
+    const auto &partitioner = *like.get_partitioner();
+    cells.clear();
+    of_cell.assign(dof_handler.get_triangulation().n_active_cells(), -1);
+    owned_vertex.clear();
+    patches.clear();
+    std::vector<int> slot(partitioner.locally_owned_size(), -1);
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    std::vector<unsigned int>            labels;
+    for (const auto &dof_cell : dof_handler.active_cell_iterators())
+      {
+        if (dof_cell->is_artificial())
+          continue;
+        dof_cell->get_dof_indices(dofs);
+        Cell c;
+        c.label = dof_cell->material_id();
+        c.owned = dof_cell->is_locally_owned();
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const auto [component, vertex] = fe.system_to_component_index(i);
+            c.dofs[3 * vertex + component] = dofs[i];
+            c.local[3 * vertex + component] =
+              partitioner.global_to_local(dofs[i]);
+          }
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          c.vertices[v] = dof_cell->vertex(v);
+        const Tensor<1, 3> a     = c.vertices[1] - c.vertices[0],
+                           b     = c.vertices[2] - c.vertices[0],
+                           e     = c.vertices[3] - c.vertices[0];
+        c.orientation            = a * cross_product_3d(b, e) > 0 ? 1 : -1;
+        const unsigned int index = cells.size();
+        of_cell[dof_cell->active_cell_index()] = index;
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          {
+            const unsigned int x = c.local[3 * v];
+            if (x >= partitioner.locally_owned_size())
+              continue;
+            if (slot[x] < 0)
+              {
+                slot[x] = patches.size();
+                owned_vertex.push_back(x);
+                patches.emplace_back();
+              }
+            patches[slot[x]].push_back(index);
+          }
+        labels.push_back(c.label);
+        cells.push_back(c);
+      }
+    // Every rank holds a vector per label of any rank: compress is
+    // collective.
+    volumes.clear();
+    for (const unsigned int label :
+         Utilities::MPI::compute_set_union(labels,
+                                           partitioner.get_mpi_communicator()))
+      volumes[Label(label)].reinit(like);
+  }
+
+  void
+  NodalVolumes::add_sparsity(DynamicSparsityPattern          &dsp,
+                             const AffineConstraints<double> &constraints) const
+  {
+    std::vector<types::global_dof_index> patch;
+    for (const std::vector<unsigned int> &around : patches)
+      {
+        patch.clear();
+        for (const unsigned int c : around)
+          patch.insert(patch.end(), cells[c].dofs.begin(), cells[c].dofs.end());
+        std::sort(patch.begin(), patch.end());
+        patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+        constraints.add_entries_local_to_global(patch, dsp, true);
+      }
+  }
+
+  double
+  NodalVolumes::volume(const Cell &cell, const BufferType &u)
+  {
+    std::array<Point<3>, vertices_per_cell> x;
+    for (unsigned int v = 0; v < vertices_per_cell; ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        x[v][c] = cell.vertices[v][c] + u.local_element(cell.local[3 * v + c]);
+    return cell.orientation * tetrahedron_volume * (x[1] - x[0]) *
+           cross_product_3d(x[2] - x[0], x[3] - x[0]);
+  }
+
+  std::array<double, 12>
+  NodalVolumes::volume_gradient(const Cell &cell, const BufferType &u)
+  {
+    std::array<Point<3>, vertices_per_cell> x;
+    for (unsigned int v = 0; v < vertices_per_cell; ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        x[v][c] = cell.vertices[v][c] + u.local_element(cell.local[3 * v + c]);
+    const Tensor<1, 3> a = x[1] - x[0], b = x[2] - x[0], e = x[3] - x[0];
+    // d(a . (b x e)): b x e at vertex 1, e x a at 2, a x b at 3, minus
+    // their sum at 0.
+    const std::array<Tensor<1, 3>, 3> partial = {
+      {cross_product_3d(b, e), cross_product_3d(e, a), cross_product_3d(a, b)}};
+    const double           scale = cell.orientation * tetrahedron_volume;
+    std::array<double, 12> g;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        g[c] = -scale * (partial[0][c] + partial[1][c] + partial[2][c]);
+        for (unsigned int v = 1; v < vertices_per_cell; ++v)
+          g[3 * v + c] = scale * partial[v - 1][c];
+      }
+    return g;
+  }
+
+  void
+  NodalVolumes::update(const BufferType &d, const BufferType &w)
+  {
+    for (auto &[label, v] : volumes)
+      v = 0;
+    for (const Cell &c : cells)
+      if (c.owned)
+        {
+          BufferType  &v       = volumes.at(c.label);
+          const double rest    = vertex_share * volume(c, w);
+          const double current = vertex_share * volume(c, d);
+          for (unsigned int i = 0; i < vertices_per_cell; ++i)
+            {
+              v.local_element(c.local[3 * i]) += rest;
+              v.local_element(c.local[3 * i + 1]) += current;
+            }
+        }
+    for (auto &[label, v] : volumes)
+      {
+        v.compress(VectorOperation::add);
+        v.update_ghost_values();
+      }
+  }
+
+  NodalVolumes::Vertex
+  NodalVolumes::vertex(const Cell          &cell,
+                       const unsigned int   v,
+                       const MaterialTable &materials) const
+  {
+    const unsigned int x = cell.local[3 * v], y = cell.local[3 * v + 1];
+    Vertex             result;
+    double             current = 0;
+    for (const auto &[label, volume] : volumes)
+      {
+        result.rest += volume.local_element(x);
+        current += volume.local_element(y);
+      }
+    result.J = current / result.rest;
+    if (!(result.J > 0 && result.rest > 0))
+      return result;
+    // Each label's volumetric energy on its share of the rest volume, at
+    // the vertex's one volume ratio.
+    for (const auto &[label, volume] : volumes)
+      if (const double share = volume.local_element(x); share > 0)
+        {
+          const MaterialLaw::Volumetric U =
+            materials.law(label).volumetric(result.J);
+          result.pressure += share / result.rest * U.dU;
+          result.stiffness += share / (result.rest * result.rest) * U.d2U;
+        }
+    result.valid = true;
+    return result;
+  }
+
+  NodalVolumes::CellPressure
+  NodalVolumes::cell(const unsigned int   cell,
+                     const MaterialTable &materials,
+                     const double         rest_volume) const
+  {
+    const Cell        &c   = cells[of_cell[cell]];
+    const MaterialLaw &law = materials.law(c.label);
+    CellPressure       result;
+    for (unsigned int v = 0; v < vertices_per_cell; ++v)
+      {
+        const Vertex n = vertex(c, v, materials);
+        if (!n.valid)
+          {
+            result.valid = false;
+            return result;
+          }
+        result.pressure += vertex_share * n.pressure;
+        result.energy += vertex_share * rest_volume * law.volumetric(n.J).U;
+      }
+    return result;
+  }
+
+  void
+  NodalVolumes::add_stiffness(const BufferType                &d,
+                              const MaterialTable             &materials,
+                              const AffineConstraints<double> &constraints,
+                              TrilinosWrappers::SparseMatrix  &tangent,
+                              BufferType                      &rhs) const
+  {
+    std::vector<types::global_dof_index> patch;
+    std::vector<double>                  g;
+    FullMatrix<double>                   M;
+    Vector<double>                       no_rhs;
+    for (unsigned int s = 0; s < patches.size(); ++s)
+      {
+        patch.clear();
+        g.clear();
+        for (const unsigned int index : patches[s])
+          {
+            const Cell                  &c      = cells[index];
+            const std::array<double, 12> g_cell = volume_gradient(c, d);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const auto at =
+                  std::find(patch.begin(), patch.end(), c.dofs[i]);
+                if (at == patch.end())
+                  {
+                    patch.push_back(c.dofs[i]);
+                    g.push_back(vertex_share * g_cell[i]);
+                  }
+                else
+                  g[at - patch.begin()] += vertex_share * g_cell[i];
+              }
+          }
+        const Cell  &first = cells[patches[s].front()];
+        unsigned int v     = 0;
+        while (first.local[3 * v] != owned_vertex[s])
+          ++v;
+        const double       factor = vertex(first, v, materials).stiffness;
+        const unsigned int n      = patch.size();
+        M.reinit(n, n);
+        no_rhs.reinit(n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            M(i, j) = factor * g[i] * g[j];
+        constraints.distribute_local_to_global(M, no_rhs, patch, tangent, rhs);
+      }
+  }
+} // namespace RestShape
