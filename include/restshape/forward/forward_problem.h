@@ -23,10 +23,10 @@
 #include <restshape/fem/cell_local_indices.h>
 #include <restshape/fem/constraint_lookup.h>
 #include <restshape/fem/discretization.h>
-#include <restshape/fem/nodal_volumes.h>
 #include <restshape/fem/state_reader.h>
 #include <restshape/fem/tangent_scatter.h>
 #include <restshape/forward/forward_parameters.h>
+#include <restshape/forward/nodal_volumes.h>
 #include <restshape/loads/load_set.h>
 #include <restshape/loads/load_state.h>
 #include <restshape/loads/load_term.h>

@@ -10,8 +10,8 @@
 // around a vertex. (A volume ratio per label and vertex, tried first, locks
 // a layer one cell thick: the Lame shell's 2 mm inner label moved 0.40 of
 // the exact cavity displacement at nu = 0.4999, 0.91 with one ratio.)
-#ifndef restshape_fem_nodal_volumes_h
-#define restshape_fem_nodal_volumes_h
+#ifndef restshape_forward_nodal_volumes_h
+#define restshape_forward_nodal_volumes_h
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>

@@ -5,7 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <restshape/fem/nodal_volumes.h>
+#include <restshape/forward/nodal_volumes.h>
 
 #include <algorithm>
 
