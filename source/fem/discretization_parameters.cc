@@ -56,10 +56,10 @@ namespace RestShape
       "pressure constant per cell: P2-P0, Q1-P0, Q2-P0); on linear "
       "tetrahedra the averaged nodal pressure (Bonet and Burton 1998, as "
       "Joldes, Wittek and Miller use for brain shift): each vertex's "
-      "volume, a quarter of each cell around it of the same label, with "
-      "its own U(J), a cell's pressure the mean of its vertices' (its "
-      "stiffness couples the cells around a vertex: about 3 times the "
-      "matrix entries of P1). auto: mixed where some label's Poisson's "
+      "volume, a quarter of each cell around it, one volume ratio per "
+      "vertex, each label's U(J) on its share of the vertex's rest volume, "
+      "a cell's pressure the mean of its vertices' (its stiffness couples "
+      "the cells around a vertex, which widens the matrix). auto: mixed where some label's Poisson's "
       "ratio is 0.49 or above, else displacement (with a warning where "
       "displacement is chosen at 0.49 and above).");
     prm.leave_subsection();

@@ -101,13 +101,20 @@ namespace RestShape
       }
   }
 
-  double
-  NodalVolumes::volume(const Cell &cell, const BufferType &u)
+  std::array<Point<3>, 4>
+  NodalVolumes::positions(const Cell &cell, const BufferType &u)
   {
     std::array<Point<3>, vertices_per_cell> x;
     for (unsigned int v = 0; v < vertices_per_cell; ++v)
       for (unsigned int c = 0; c < 3; ++c)
         x[v][c] = cell.vertices[v][c] + u.local_element(cell.local[3 * v + c]);
+    return x;
+  }
+
+  double
+  NodalVolumes::volume(const Cell &cell, const BufferType &u)
+  {
+    const std::array<Point<3>, vertices_per_cell> x = positions(cell, u);
     return cell.orientation * tetrahedron_volume * (x[1] - x[0]) *
            cross_product_3d(x[2] - x[0], x[3] - x[0]);
   }
@@ -115,10 +122,7 @@ namespace RestShape
   std::array<double, 12>
   NodalVolumes::volume_gradient(const Cell &cell, const BufferType &u)
   {
-    std::array<Point<3>, vertices_per_cell> x;
-    for (unsigned int v = 0; v < vertices_per_cell; ++v)
-      for (unsigned int c = 0; c < 3; ++c)
-        x[v][c] = cell.vertices[v][c] + u.local_element(cell.local[3 * v + c]);
+    const std::array<Point<3>, vertices_per_cell> x = positions(cell, u);
     const Tensor<1, 3> a = x[1] - x[0], b = x[2] - x[0], e = x[3] - x[0];
     // d(a . (b x e)): b x e at vertex 1, e x a at 2, a x b at 3, minus
     // their sum at 0.

@@ -1,15 +1,15 @@
 // The averaged nodal pressure tetrahedron (Bonet and Burton 1998; the
 // linear tetrahedron Joldes, Wittek and Miller use for brain shift): the
-// mixed formulation of linear tetrahedra. Each vertex n carries, per label
-// L of the cells around it, the rest volume V_n = sum_e V_e / 4 and the
-// current volume v_n = sum_e v_e / 4 of those cells, one volume ratio
-// J_n = v_n / V_n, and the volumetric energy sum_L V_nL U_L(J_n), each
-// label L's energy (K_L/2 (ln J)^2) on its share V_nL of the rest volume:
-// a cell's pressure is the mean of its vertices' sum_L V_nL U_L'(J_n) / V_n,
-// constant on the cell, and the stiffness couples every DoF of the cells
-// around a vertex. (A volume ratio per label and vertex, tried first, locks
-// a layer one cell thick: the Lame shell's 2 mm inner label moved 0.40 of
-// the exact cavity displacement at nu = 0.4999, 0.91 with one ratio.)
+// mixed formulation of linear tetrahedra. Each vertex n has the rest
+// volume V_n = sum_e V_e / 4 and the current volume v_n = sum_e v_e / 4 of
+// the cells around it, one volume ratio J_n = v_n / V_n, and the
+// volumetric energy sum_L V_nL U_L(J_n): each label L's energy (K_L/2
+// (ln J)^2) on its share V_nL of the rest volume. A cell's pressure is the
+// mean of its vertices' sum_L V_nL U_L'(J_n) / V_n, constant on the cell;
+// the stiffness couples every DoF of the cells around a vertex. (A volume
+// ratio per label and vertex, tried first, locks a layer one cell thick:
+// the Lame shell's 2 mm inner label moved 0.40 of the exact cavity
+// displacement at nu = 0.4999, 0.91 with one ratio.)
 #ifndef restshape_forward_nodal_volumes_h
 #define restshape_forward_nodal_volumes_h
 
@@ -44,15 +44,15 @@ namespace RestShape
     add_sparsity(dealii::DynamicSparsityPattern          &dsp,
                  const dealii::AffineConstraints<double> &constraints) const;
 
-    /// The vertices' rest and current volumes per label at the state
-    /// (d, w), the rest position X + w and the current one X + d
+    /// The vertices' rest volumes per label, and their current ones, at
+    /// the state (d, w): the rest position X + w, the current one X + d
     /// (ghosted). Collective.
     void
     update(const BufferType &d, const BufferType &w);
 
-    /// The pressure U'(J) averaged over a cell's vertices (Pa) and the
-    /// cell's share of the volumetric energy (J); valid is false where a
-    /// vertex's volume ratio is not positive.
+    /// The vertices' pressure sum_L V_nL U_L'(J_n) / V_n averaged over a
+    /// cell (Pa) and the cell's share of the volumetric energy (J); valid
+    /// is false where a vertex's volume ratio is not positive.
     struct CellPressure
     {
       double pressure = 0;
@@ -67,8 +67,8 @@ namespace RestShape
          const MaterialTable &materials,
          const double         rest_volume) const;
 
-    /// tangent += U''(J_n) / V_n g_n g_n^T for every locally owned vertex
-    /// and label, through @p constraints (inhomogeneities into @p rhs).
+    /// tangent += sum_L V_nL U_L''(J_n) / V_n^2 g_n g_n^T (g_n = dv_n/dd)
+    /// for every locally owned vertex, through @p constraints.
     void
     add_stiffness(const BufferType                        &d,
                   const MaterialTable                     &materials,
@@ -87,11 +87,16 @@ namespace RestShape
       bool   owned       = false;
     };
 
-    /// The signed volume of @p cell at positions vertex + @p u.
+    /// The positions vertex + @p u of @p cell's vertices.
+    static std::array<dealii::Point<3>, 4>
+    positions(const Cell &cell, const BufferType &u);
+
+    /// The volume of @p cell at positions(), signed: negative where it
+    /// is inverted against the mesh cell.
     static double
     volume(const Cell &cell, const BufferType &u);
 
-    /// dv/du of @p cell at the positions vertex + @p u: [3 v + c].
+    /// dv/du of @p cell at positions(): [3 v + c].
     static std::array<double, 12>
     volume_gradient(const Cell &cell, const BufferType &u);
 
@@ -110,12 +115,12 @@ namespace RestShape
 
     std::vector<Cell> cells;   // owned and ghost
     std::vector<int>  of_cell; // active index -> cells, or -1
-    // Per locally owned vertex (by its x-DoF's local index / 3 order):
-    // its x-DoF's local index and the cells around it.
+    // Per locally owned vertex: its x-DoF's local index and the cells
+    // around it (indices into cells).
     std::vector<unsigned int>              owned_vertex;
     std::vector<std::vector<unsigned int>> patches;
-    // Per label: at a vertex's x-DoF the rest volume, at its y-DoF the
-    // current one.
+    // Per label, of that label's cells: at a vertex's x-DoF its rest
+    // volume, at its y-DoF its current one (m^3).
     std::map<Label, BufferType> volumes;
   };
 } // namespace RestShape
