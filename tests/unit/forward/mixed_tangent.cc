@@ -1,10 +1,12 @@
 // The mixed formulation's tangent (Discretization/Formulation = mixed: the
 // isochoric law at each point and the volumetric energy of each cell's
-// mean dilatation) is the derivative of its residual: on the cantilever
-// (P2 tetrahedra, Q1 and Q2 hexahedra) at nu = 0.4999, for every law, at a
-// deformed state (a bend and a squeeze of the free part), K v against
-// central differences of the residual along a smooth v; and the residual
-// is the derivative of the energy (central differences along v).
+// mean dilatation; on linear tetrahedra that of the vertices' volumes,
+// where the cantilever's two labels share vertices) is the derivative of
+// its residual: on the cantilever (P1 and P2 tetrahedra, Q1 and Q2
+// hexahedra) at nu = 0.4999, for every law, at a deformed state (a bend
+// and a squeeze of the free part), K v against central differences of the
+// residual along a smooth v; and the residual is the derivative of the
+// energy (central differences along v).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
@@ -120,6 +122,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   for (const std::string law : {"neo-Hookean", "corotational", "Ogden"})
     {
+      check("tetrahedra", 1, law);
       check("tetrahedra", 2, law);
       check("hexahedra", 1, law);
     }
