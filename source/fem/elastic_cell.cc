@@ -172,6 +172,14 @@ namespace RestShape
   }
 
   void
+  ElasticCell::volume_gradient_in_dof_order(std::vector<double> &g) const
+  {
+    g.resize(index.size());
+    for (unsigned int r = 0; r < index.size(); ++r)
+      g[index[r]] = volume_gradient[r];
+  }
+
+  void
   ElasticCell::add_residual(const Point &p)
   {
     const double *bx = &b[0], *by = &b[n_scalar], *bz = &b[2 * n_scalar];

@@ -73,6 +73,10 @@ namespace RestShape
         nodal_volumes.reinit(discretization_.dof_handler(), like);
         nodal_volumes.add_sparsity(dsp, discretization_.base_constraints());
       }
+    if (parameters.discretization.mixed)
+      pressure_prediction.reset(
+        discretization_.dof_handler().get_triangulation().n_active_cells(),
+        discretization_.fe().n_dofs_per_cell());
     SparsityTools::distribute_sparsity_pattern(
       dsp,
       discretization_.locally_owned_dofs(),
@@ -247,6 +251,7 @@ namespace RestShape
     d_ghost      = d;
     w_ghost      = w;
     current_load = new_load;
+    pressure_prediction.forget(); // a state of its own
     // Not known until the new state is assembled (potential_energy()).
     total_energy = std::numeric_limits<double>::quiet_NaN();
   }

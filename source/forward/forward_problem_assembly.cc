@@ -61,6 +61,7 @@ namespace RestShape
     FaceScratch                    faces;          // of the load terms
     ElasticCell                    elastic;        // the law's terms
     std::unique_ptr<SimplexValues> simplex;        // on affine tetrahedra
+    std::vector<double> d_local, w_local, g_local; // PressurePrediction's
   };
 
   struct ForwardProblem::CopyData
@@ -127,10 +128,23 @@ namespace RestShape
     // V U(J_mean) of the cell's mean dilatation J_mean = int J dV_rest / V
     // (a condensed pressure U'(J_mean) constant on the cell), its
     // stiffness U''(J_mean) / V g g^T added below.
-    const bool mixed             = parameters.discretization.mixed;
-    const bool nodal             = parameters.discretization.nodal_pressure;
-    double     volumetric_factor = 0;
-    const auto add_points        = [&](const auto &values) {
+    const bool mixed              = parameters.discretization.mixed;
+    const bool nodal              = parameters.discretization.nodal_pressure;
+    double     volumetric_factor  = 0;
+    double     condensed_pressure = 0; // U'(J_mean) of a cell's pressure
+    const bool predicted          = matrix && mixed && !nodal;
+    if (predicted)
+      {
+        const unsigned int n = copy.local.size();
+        scratch.d_local.resize(n);
+        scratch.w_local.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            scratch.d_local[i] = d_buffer.local_element(copy.local[i]);
+            scratch.w_local[i] = w_buffer.local_element(copy.local[i]);
+          }
+      }
+    const auto add_points = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
       const unsigned int n = values.n_quadrature_points;
@@ -167,10 +181,19 @@ namespace RestShape
         }
       else if (mixed)
         {
-          U                 = law.volumetric(J_volume / V);
-          volumetric_factor = U.d2U / V;
+          U                  = law.volumetric(J_volume / V);
+          volumetric_factor  = U.d2U / V;
+          condensed_pressure = U.dU;
           copy.energy += V * U.U;
         }
+      // The tangent's geometric term: the pressure the three-field step
+      // predicts (PressurePrediction), the residual's is U'(J_mean).
+      const double geometric_pressure =
+        predicted ? pressure_prediction.pressure(copy.cell_index,
+                                                 scratch.d_local.data(),
+                                                 scratch.w_local.data(),
+                                                 U.dU) :
+                    U.dU;
       for (unsigned int q = 0; q < n; ++q)
         {
           const Tensor2     &F = scratch.F[q];
@@ -178,7 +201,7 @@ namespace RestShape
           Tensor2            dJ;
           if (!(mixed ? law.evaluate_isochoric(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W) :
-                               law.evaluate(
+                        law.evaluate(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W)))
             return false;
           if (mixed)
@@ -191,8 +214,9 @@ namespace RestShape
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int k = 0; k < 3; ++k)
                       for (unsigned int l = 0; l < 3; ++l)
-                        A[i][j][k][l] += U.dU * (dJ[i][j] * F_inv_T[k][l] -
-                                                 dJ[i][l] * F_inv_T[k][j]);
+                        A[i][j][k][l] +=
+                          geometric_pressure *
+                          (dJ[i][j] * F_inv_T[k][l] - dJ[i][l] * F_inv_T[k][j]);
               p.dJ = &dJ;
             }
           p.q       = q;
@@ -203,7 +227,7 @@ namespace RestShape
           p.f_body  = varies ? load_set.body_force(*cell,
                                                   values.quadrature_point(q),
                                                   current_load) :
-                                      cell_body_force;
+                               cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
@@ -239,6 +263,16 @@ namespace RestShape
         elastic.matrix(copy.cell_matrix);
         if (mixed && !nodal)
           elastic.add_volumetric_stiffness(copy.cell_matrix, volumetric_factor);
+        if (predicted)
+          {
+            elastic.volume_gradient_in_dof_order(scratch.g_local);
+            pressure_prediction.record(copy.cell_index,
+                                       scratch.d_local.data(),
+                                       scratch.w_local.data(),
+                                       condensed_pressure,
+                                       volumetric_factor,
+                                       scratch.g_local);
+          }
       }
 
     load_set.assemble_faces({cell,

@@ -69,6 +69,12 @@ namespace RestShape
     total_energy       = a.energy;
   }
 
+  void
+  ForwardProblem::unknowns_restarted()
+  {
+    pressure_prediction.forget();
+  }
+
   double
   ForwardProblem::resolution() const
   {

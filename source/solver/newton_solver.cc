@@ -372,6 +372,7 @@ namespace RestShape
           << std::endl;
     system.unknowns() = watchdog.checkpoint();
     system.unknowns_changed();
+    system.unknowns_restarted();
     start_new_history(stats);
   }
 
@@ -470,6 +471,7 @@ namespace RestShape
     // failure left from an earlier attempt would fail this one at its first
     // contact correction.
     stats.failure.clear();
+    system.unknowns_restarted();
     stats.cells_inverted = false;
     stats.at_round_off   = false;
     stats.round_off      = 0;

@@ -84,6 +84,11 @@ namespace RestShape
     add_volumetric_stiffness(dealii::FullMatrix<double> &matrix,
                              const double                factor) const;
 
+    /// The volume gradient g = dv/dd of the points added (mixed
+    /// formulation), in the cell's local DoF order (m^2).
+    void
+    volume_gradient_in_dof_order(std::vector<double> &g) const;
+
   private:
     /// The point's terms, with b and phi set.
     void

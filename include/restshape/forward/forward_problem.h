@@ -27,6 +27,7 @@
 #include <restshape/fem/tangent_scatter.h>
 #include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/nodal_volumes.h>
+#include <restshape/forward/pressure_prediction.h>
 #include <restshape/loads/load_set.h>
 #include <restshape/loads/load_state.h>
 #include <restshape/loads/load_term.h>
@@ -280,6 +281,8 @@ namespace RestShape
     assembled() const override;
     void
     restore(const Assembled &a) override;
+    void
+    unknowns_restarted() override;
     double
     resolution() const override;
     std::string
@@ -356,6 +359,9 @@ namespace RestShape
     // Mixed formulation on linear tetrahedra: the vertices' volumes of
     // the last assembly (or of nodal_cell_pressure()'s state).
     mutable NodalVolumes nodal_volumes;
+    // Mixed formulation with a pressure per cell: the linearisation of
+    // each cell's pressure at the last tangent, for the next tangent.
+    mutable PressurePrediction pressure_prediction;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
       magnitude_buffer;
     double total_energy = 0; // of the last assembly (J)

@@ -82,6 +82,12 @@ namespace RestShape
     assembled() const = 0;
     virtual void
     restore(const Assembled &a) = 0;
+    /// The unknowns start again from a state of their own (a load step's
+    /// start, a checkpoint): what the system predicted from its last
+    /// steps no longer applies.
+    virtual void
+    unknowns_restarted()
+    {}
 
     /// The smallest change of an unknown the state resolves through its
     /// deformation gradient: eps times the smallest cell diameter (m).
