@@ -39,3 +39,23 @@ timer_calls() {
   calls=$(grep "^| $1 " "$2" | awk -F'|' '{ gsub(/ /, "", $3); print $3 }')
   echo "${calls:-0}"
 }
+
+# seconds COMMAND...: run it, print its wall seconds (fails if it fails).
+seconds() {
+  local start end
+  start=$(date +%s.%N)
+  "$@" || return 1
+  end=$(date +%s.%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f\n", b - a }'
+}
+
+# median: the median of the numbers on stdin (one line, space-separated).
+median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+# require_valgrind: exit 77 (skipped) with a line if valgrind is missing.
+require_valgrind() {
+  if ! command -v valgrind >/dev/null; then
+    echo "valgrind is not installed (apt-get install valgrind): nothing measured"
+    exit 77
+  fi
+}

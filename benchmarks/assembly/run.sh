@@ -30,10 +30,7 @@ coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
 here=$(dirname "$0")
 source "$here/../common.sh"
-if ! command -v valgrind >/dev/null; then
-  echo "valgrind is not installed (apt-get install valgrind): nothing measured"
-  exit 77
-fi
+require_valgrind
 mkdir -p "$out"
 # The function itself: a pattern ending in * would also match its lambdas
 # (the copier's, when not inlined) and stop collecting inside them.

@@ -28,10 +28,7 @@ coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
 here=$(dirname "$0")
 source "$here/../common.sh"
-if ! command -v valgrind >/dev/null; then
-  echo "valgrind is not installed (apt-get install valgrind): nothing measured"
-  exit 77
-fi
+require_valgrind
 mkdir -p "$out"
 machine_text=$(machine) # before the thread limits: nproc honours OMP_NUM_THREADS
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
@@ -49,14 +46,7 @@ run() { # formulation inverse directory [launcher...]
     --set "Scenario drained/Enabled=false" --set "Scenario craniotomy/Enabled=false" \
     --set "Output/Write VTU=false" --set "Solver/Check stability=false" "$prm"
 }
-seconds() { # command...: run it, print its wall seconds
-  local start end
-  start=$(date +%s.%N)
-  "$@" >/dev/null 2>&1 || return 1
-  end=$(date +%s.%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f\n", b - a }'
-}
-median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+quiet() { "$@" >/dev/null 2>&1; }
 instructions() { # callgrind output file: its total Ir
   callgrind_annotate "$1" 2>/dev/null | awk '/PROGRAM TOTALS/ { gsub(/,/, "", $1); print $1 }'
 }
@@ -81,7 +71,7 @@ for c in "${cases[@]}"; do
   times=()
   if ! $coarse; then
     for ((r = 0; r < repeats; ++r)); do
-      times+=("$(seconds run "$formulation" "$inverse" "$base.timed")")
+      times+=("$(seconds quiet run "$formulation" "$inverse" "$base.timed")")
     done
   fi
   wall[$name]=$(echo "${times[*]:-0}" | median)

@@ -51,14 +51,6 @@ fi
 have_ccx=false
 command -v ccx >/dev/null && have_ccx=true
 
-seconds() { # command...: run it, print its wall seconds
-  local start end
-  start=$(date +%s.%N)
-  "$@" || return 1
-  end=$(date +%s.%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f\n", b - a }'
-}
-median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
 ours() { # mesh directory
   "$exe" --set "Mesh/File=$1" --set "Output/Directory=$2" \
