@@ -80,47 +80,36 @@ class Law:
                       xtol=1e-15, rtol=1e-15)
 
 
-def forward(law, A, B, p, k, extend):
-    """r(R) on [A (1 - extend), B (1 + extend)] (mm)."""
+def radial_solution(law, inner, outer, p, k, extend, inverse):
+    """The radius of the other configuration as a function of the radius t
+    of the mesh's, on [inner (1 - extend), outer (1 + extend)] (mm): r(R)
+    forward (the mesh is the rest shape), R(r) inverse (the mesh is the
+    loaded shape). The state is (the other radius, lambda_r) along t."""
 
-    def rhs(R, y):
-        return [y[1], law.curvature(R, y[0], y[1])]
+    def radii(t, s):  # (rest, current)
+        return (s, t) if inverse else (t, s)
 
-    def shoot(a, span):
-        lt = a / A
+    def rhs(t, y):
+        R, r = radii(t, y[0])
+        curvature = law.curvature(R, r, y[1])
+        return [1 / y[1], curvature / y[1]] if inverse else [y[1], curvature]
+
+    def shoot(s0, span):
+        R, r = radii(inner, s0)
+        lt = r / R
         lr = law.radial_stretch(lt, -p * lt * lt)
-        return solve_ivp(rhs, span, [a, lr], method="DOP853", rtol=TOLERANCE,
+        return solve_ivp(rhs, span, [s0, lr], method="DOP853", rtol=TOLERANCE,
                          atol=TOLERANCE, dense_output=True)
 
-    def outer(a):
-        end = shoot(a, (A, B)).y[:, -1]
-        return law.radial(end[1], end[0] / B) + k * 1e-3 * (end[0] - B)
+    def outer_condition(s0):
+        s, lr = shoot(s0, (inner, outer)).y[:, -1]
+        R, r = radii(outer, s)
+        return law.radial(lr, r / R) + k * 1e-3 * (r - R)
 
-    a = root(outer, A)
-    out, inside = shoot(a, (A, B * (1 + extend))), shoot(a, (A, A * (1 - extend)))
-    return lambda R: np.where(R >= A, out.sol(R)[0], inside.sol(R)[0])
-
-
-def inverse(law, a, b, p, k, extend):
-    """R(r) on [a (1 - extend), b (1 + extend)] (mm): r is the variable."""
-
-    def rhs(r, y):
-        R, lr = y
-        return [1 / lr, law.curvature(R, r, lr) / lr]
-
-    def shoot(A, span):
-        lt = a / A
-        lr = law.radial_stretch(lt, -p * lt * lt)
-        return solve_ivp(rhs, span, [A, lr], method="DOP853", rtol=TOLERANCE,
-                         atol=TOLERANCE, dense_output=True)
-
-    def outer(A):
-        R, lr = shoot(A, (a, b)).y[:, -1]
-        return law.radial(lr, b / R) + k * 1e-3 * (b - R)
-
-    A = root(outer, a)
-    out, inside = shoot(A, (a, b * (1 + extend))), shoot(A, (a, a * (1 - extend)))
-    return lambda r: np.where(r >= a, out.sol(r)[0], inside.sol(r)[0])
+    s0 = root(outer_condition, inner)
+    out = shoot(s0, (inner, outer * (1 + extend)))
+    inside = shoot(s0, (inner, inner * (1 - extend)))
+    return lambda t: np.where(t >= inner, out.sol(t)[0], inside.sol(t)[0])
 
 
 def root(f, x0):
@@ -166,8 +155,8 @@ def main():
     args = parser.parse_args()
     a, b = (float(x) for x in args.radii.split(","))
     law = Law(args.law, args.E, args.nu)
-    solve = forward if args.mode == "forward" else inverse
-    exact_radius = solve(law, a, b, args.p_inner, args.support, 0.2)
+    exact_radius = radial_solution(law, a, b, args.p_inner, args.support, 0.2,
+                                   args.mode == "inverse")
     X, Y = read_nodes(args.nodes, args.mode)
     R = np.linalg.norm(X, axis=1)
     exact = exact_radius(R)[:, None] * X / R[:, None]
