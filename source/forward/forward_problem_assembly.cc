@@ -61,7 +61,7 @@ namespace RestShape
     FaceScratch                    faces;          // of the load terms
     ElasticCell                    elastic;        // the law's terms
     std::unique_ptr<SimplexValues> simplex;        // on affine tetrahedra
-    std::vector<double> d_local, w_local, g_local; // PressurePrediction's
+    std::vector<double>            g_local;        // PressurePrediction's
   };
 
   struct ForwardProblem::CopyData
@@ -133,18 +133,7 @@ namespace RestShape
     double     volumetric_factor  = 0;
     double     condensed_pressure = 0; // U'(J_mean) of a cell's pressure
     const bool predicted          = matrix && mixed && !nodal;
-    if (predicted)
-      {
-        const unsigned int n = copy.local.size();
-        scratch.d_local.resize(n);
-        scratch.w_local.resize(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            scratch.d_local[i] = d_buffer.local_element(copy.local[i]);
-            scratch.w_local[i] = w_buffer.local_element(copy.local[i]);
-          }
-      }
-    const auto add_points = [&](const auto &values) {
+    const auto add_points         = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
       const unsigned int n = values.n_quadrature_points;
@@ -190,10 +179,10 @@ namespace RestShape
       // predicts (PressurePrediction), the residual's is U'(J_mean).
       const double geometric_pressure =
         predicted ? pressure_prediction.pressure(copy.cell_index,
-                                                 scratch.d_local.data(),
-                                                 scratch.w_local.data(),
+                                                 scratch.d_cell.data(),
+                                                 scratch.w_cell.data(),
                                                  U.dU) :
-                    U.dU;
+                            U.dU;
       for (unsigned int q = 0; q < n; ++q)
         {
           const Tensor2     &F = scratch.F[q];
@@ -201,7 +190,7 @@ namespace RestShape
           Tensor2            dJ;
           if (!(mixed ? law.evaluate_isochoric(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W) :
-                        law.evaluate(
+                                law.evaluate(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W)))
             return false;
           if (mixed)
@@ -227,7 +216,7 @@ namespace RestShape
           p.f_body  = varies ? load_set.body_force(*cell,
                                                   values.quadrature_point(q),
                                                   current_load) :
-                               cell_body_force;
+                                       cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
@@ -267,8 +256,8 @@ namespace RestShape
           {
             elastic.volume_gradient_in_dof_order(scratch.g_local);
             pressure_prediction.record(copy.cell_index,
-                                       scratch.d_local.data(),
-                                       scratch.w_local.data(),
+                                       scratch.d_cell.data(),
+                                       scratch.w_cell.data(),
                                        condensed_pressure,
                                        volumetric_factor,
                                        scratch.g_local);

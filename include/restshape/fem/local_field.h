@@ -59,6 +59,13 @@ namespace RestShape
                  });
     }
 
+    /// The coefficients, in the cell's local DoF order.
+    const double *
+    data() const
+    {
+      return coefficients.data();
+    }
+
     /// The coefficient of shape function @p i.
     double
     operator[](const unsigned int i) const
