@@ -1,8 +1,8 @@
 // What makes a contact solve robust where users go, on the coarse brain in
 // the skull 0.5 mm from it (buoyed, no CSF pressure, no tethers):
 //
-// - Retry: at 8 g the first attempt fails (50 Newton steps without
-//   convergence), the load stepping halves and converges; the attempts
+// - Retry: at 8 g or more the first attempt fails (50 Newton steps
+//   without convergence), the load stepping halves and converges; the attempts
 //   after the first failure are judged on their own (a failure left over
 //   from an earlier attempt used to fail every later one at its first
 //   contact correction).
@@ -90,34 +90,45 @@ main(int argc, char **argv)
                 1e-8);
   }
 
-  // Retry: a load the first attempt cannot carry.
+  // Retry: a load the first attempt cannot carry. 8 g in one increment
+  // loses its way on one machine (|R|/|f| about 10 after 50 steps) and
+  // converges in 30 steps on another: round-off decides. So the load grows
+  // until a first attempt fails (at most 24 g), and that run must then
+  // converge through halved increments with the contact conditions held;
+  // a retry that fails can only fail through what the first attempt left
+  // behind. Every run before it converged in one load step, and its
+  // contact conditions must hold as well.
   {
-    // 8 g in one increment: Newton loses its way (|R|/|f| about 10 after
-    // 50 steps, its line search shortened by inverting trial steps); 4 g
-    // then converges in 13 steps and 4 -> 8 g in about as many, far below
-    // the cap, so that a retry that fails can only fail through what the
-    // first attempt left behind. (A cap one step below the full load's
-    // steps was the earlier form: the halved increments need about as
-    // many steps as the whole, and round-off on another machine made
-    // every one of them miss the cap by one.)
-    const std::string eight_g =
-      "subsection Loads\n set Gravity = 78.48, 0, 0\nend\n"
-      "subsection Solver\n set Linear solver = direct\n"
-      " set Newton tolerance = 1e-8\n"
-      " set Maximum Newton iterations = 50\nend\n";
-    Scene                 s(brain + eight_g);
-    const SolveStatistics st = solve_brain(s);
-    std::cout << "8 g along +x, 50 Newton steps per attempt: "
-              << st.newton_iterations << " Newton steps, " << st.load_steps
-              << " load steps" << (st.failure.empty() ? "" : ": ") << st.failure
-              << std::endl;
-    check_between("retry: converged", st.converged, 1, 1);
-    check_between("retry: the first attempt failed (more than one load "
-                  "step)",
-                  st.load_steps,
-                  2,
-                  100);
-    check_contact("retry", s);
+    bool retried = false;
+    for (const double g : {8., 12., 16., 24.})
+      {
+        const std::string load =
+          "subsection Loads\n set Gravity = " + std::to_string(9.81 * g) +
+          ", 0, 0\nend\n"
+          "subsection Solver\n set Linear solver = direct\n"
+          " set Newton tolerance = 1e-8\n"
+          " set Maximum Newton iterations = 50\nend\n";
+        Scene                 s(brain + load);
+        const SolveStatistics st = solve_brain(s);
+        const std::string name   = "retry at " + std::to_string(int(g)) + " g";
+        std::cout << name
+                  << ", 50 Newton steps per attempt: " << st.newton_iterations
+                  << " Newton steps, " << st.load_steps << " load steps"
+                  << (st.failure.empty() ? "" : ": ") << st.failure
+                  << std::endl;
+        check_between(name + ": converged", st.converged, 1, 1);
+        check_contact(name, s);
+        if (st.load_steps > 1)
+          {
+            retried = true;
+            break;
+          }
+      }
+    check_between("retry: a first attempt failed (more than one load step) "
+                  "at some load up to 24 g",
+                  retried,
+                  1,
+                  1);
   }
 
   // A genuine stall at the round-off level.
