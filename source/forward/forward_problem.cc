@@ -74,9 +74,14 @@ namespace RestShape
         nodal_volumes.add_sparsity(dsp, discretization_.base_constraints());
       }
     if (parameters.discretization.mixed)
-      pressure_prediction.reset(
-        discretization_.dof_handler().get_triangulation().n_active_cells(),
-        discretization_.fe().n_dofs_per_cell());
+      {
+        const unsigned int n_cells =
+          discretization_.dof_handler().get_triangulation().n_active_cells();
+        pressure_prediction.reset(n_cells,
+                                  discretization_.fe().n_dofs_per_cell());
+        if (!parameters.discretization.nodal_pressure)
+          cell_pressures.reset(n_cells);
+      }
     SparsityTools::distribute_sparsity_pattern(
       dsp,
       discretization_.locally_owned_dofs(),

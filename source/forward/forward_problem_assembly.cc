@@ -132,7 +132,8 @@ namespace RestShape
     const bool nodal              = parameters.discretization.nodal_pressure;
     double     volumetric_factor  = 0;
     double     condensed_pressure = 0; // U'(J_mean) of a cell's pressure
-    const bool predicted          = matrix && mixed && !nodal;
+    const bool shifted            = cell_pressures.shifted();
+    const bool predicted          = matrix && mixed && !nodal && !shifted;
     const auto add_points         = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
@@ -174,6 +175,9 @@ namespace RestShape
           volumetric_factor  = U.d2U / V;
           condensed_pressure = U.dU;
           copy.energy += V * U.U;
+          cell_pressures.record(copy.cell_index, {J_volume / V, U.dU, U.d2U});
+          // A caller's three-field pressure (CellPressures).
+          U.dU = cell_pressures.pressure(copy.cell_index, U.dU);
         }
       // The tangent's geometric term: the pressure the three-field step
       // predicts (PressurePrediction), the residual's is U'(J_mean).

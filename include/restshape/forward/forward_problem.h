@@ -25,6 +25,7 @@
 #include <restshape/fem/discretization.h>
 #include <restshape/fem/state_reader.h>
 #include <restshape/fem/tangent_scatter.h>
+#include <restshape/forward/cell_pressures.h>
 #include <restshape/forward/forward_parameters.h>
 #include <restshape/forward/nodal_volumes.h>
 #include <restshape/forward/pressure_prediction.h>
@@ -187,6 +188,27 @@ namespace RestShape
     /// averaged over its vertices, at update_nodal_volumes()' state (Pa).
     double
     nodal_cell_pressure(const unsigned int cell) const;
+    /// Mixed formulation with a pressure per cell: each cell's mean
+    /// dilatation, U'(J_mean) and U''(J_mean) at the last assembly, by
+    /// active cell index (the locally owned cells'; empty otherwise).
+    const std::vector<CellDilatation> &
+    cell_dilatations() const
+    {
+      return cell_pressures.last();
+    }
+    /**
+     * Mixed formulation with a pressure per cell: from now on the
+     * assembly uses U'(J_mean) + @p offsets[c] (Pa, by active cell index)
+     * as the pressure of cell c, in the residual and the tangent, so that
+     * the derivative of the residual at the state the offsets were taken
+     * at is the three-field tangent with the pressures U'(J_mean) +
+     * offsets (cell_pressures.h); empty: the condensed pressure again.
+     */
+    void
+    set_pressure_offsets(std::vector<double> offsets)
+    {
+      cell_pressures.set_offsets(std::move(offsets));
+    }
     /// The contact conditions checked at the end of the last Newton solve
     /// with contact (ActiveSetConstraints::check_conditions()).
     const ContactConditions &
@@ -362,6 +384,9 @@ namespace RestShape
     // Mixed formulation with a pressure per cell: the linearisation of
     // each cell's pressure at the last tangent, for the next tangent.
     mutable PressurePrediction pressure_prediction;
+    // ... and the cells' dilatations of the last assembly, with the
+    // pressure offsets a caller set (set_pressure_offsets()).
+    mutable CellPressures cell_pressures;
     BufferType raw_buffer, condensed_buffer, external_buffer, rhs_buffer,
       magnitude_buffer;
     double total_energy = 0; // of the last assembly (J)

@@ -6,6 +6,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <restshape/forward/forward_problem.h>
+#include <restshape/inverse/three_field_pressures.h>
 #include <restshape/solver/newton_watchdog.h>
 
 #include <string>
@@ -65,6 +66,9 @@ namespace RestShape
                const VectorType &obstacle_force);
 
   private:
+    /// The finite-difference step e along @p v.
+    double
+    difference_step(const VectorType &v) const;
     /// J @p v = (R(w + e v) - R(w)) / e into @p product, one residual
     /// assembly (@p r = R(w); @p trial: work space); counts the product.
     void
@@ -81,11 +85,21 @@ namespace RestShape
     /// @p w until |R| <= @p tolerance |R0|; false (result.failure) if not.
     bool
     newton(VectorType &w, const double tolerance, const double s);
+    /// A Newton update and how GMRES found it.
+    struct Direction
+    {
+      VectorType   delta;
+      unsigned int products = 0;    // GMRES iterations
+      bool         solved   = true; // |J delta + r| <= eta |r| reached
+    };
     /// The Newton update at @p w with residual @p r: flexible GMRES on
     /// J delta = -r to |J delta + r| <= @p eta |r|, right-preconditioned
-    /// by the forward tangent; with the number of GMRES iterations.
-    std::pair<VectorType, unsigned int>
+    /// by the forward tangent.
+    Direction
     newton_direction(const VectorType &w, const VectorType &r, double eta);
+    /// The steps a full step on trial has to reach its target.
+    unsigned int
+    trial_steps() const;
     enum class Step
     {
       accepted, // |R| decreased (Armijo)
@@ -106,6 +120,7 @@ namespace RestShape
 
     ForwardProblem             &forward;
     dealii::ConditionalOStream &pcout;
+    ThreeFieldPressures         pressures; // mixed, a pressure per cell
     LoadState                   load;
     VectorType                  d; // the displacement at the target
     VectorType                  target_displacement, obstacle_force;
