@@ -257,6 +257,7 @@ namespace RestShape
     w_ghost      = w;
     current_load = new_load;
     pressure_prediction.forget(); // a state of its own
+    nodal_volumes.forget_linearisation();
     // Not known until the new state is assembled (potential_energy()).
     total_energy = std::numeric_limits<double>::quiet_NaN();
   }
@@ -300,5 +301,22 @@ namespace RestShape
   ForwardProblem::materials() const
   {
     return material_table;
+  }
+
+  std::vector<PressurePoint>
+  ForwardProblem::pressure_points() const
+  {
+    if (parameters.discretization.nodal_pressure)
+      return nodal_volumes.pressure_points(material_table);
+    return cell_pressures.last();
+  }
+
+  void
+  ForwardProblem::set_pressure_offsets(std::vector<double> offsets)
+  {
+    if (parameters.discretization.nodal_pressure)
+      nodal_volumes.set_pressure_offsets(std::move(offsets));
+    else
+      cell_pressures.set_offsets(std::move(offsets));
   }
 } // namespace RestShape

@@ -132,6 +132,7 @@ namespace RestShape
     const bool nodal              = parameters.discretization.nodal_pressure;
     double     volumetric_factor  = 0;
     double     condensed_pressure = 0; // U'(J_mean) of a cell's pressure
+    double     nodal_predicted    = 0; // the vertices' predicted pressure
     const bool shifted            = cell_pressures.shifted();
     const bool predicted          = matrix && mixed && !nodal && !shifted;
     const auto add_points         = [&](const auto &values) {
@@ -166,7 +167,8 @@ namespace RestShape
             nodal_volumes.cell(copy.cell_index, material_table, V);
           if (!c.valid)
             return false;
-          U.dU = c.pressure;
+          U.dU            = c.pressure;
+          nodal_predicted = c.predicted;
           copy.energy += c.energy;
         }
       else if (mixed)
@@ -186,7 +188,8 @@ namespace RestShape
                                                  scratch.d_cell.data(),
                                                  scratch.w_cell.data(),
                                                  U.dU) :
-                            U.dU;
+                (matrix && nodal) ? nodal_predicted :
+                                    U.dU;
       for (unsigned int q = 0; q < n; ++q)
         {
           const Tensor2     &F = scratch.F[q];
@@ -389,8 +392,11 @@ namespace RestShape
       Utilities::MPI::min(all_valid ? 1 : 0, discretization_.communicator()) ==
       1;
     if (matrix && valid_everywhere && parameters.discretization.nodal_pressure)
-      nodal_volumes.add_stiffness(
-        d_buffer, material_table, constraints_newton, tangent, rhs_buffer);
+      {
+        nodal_volumes.add_stiffness(
+          d_buffer, material_table, constraints_newton, tangent, rhs_buffer);
+        nodal_volumes.record_linearisation(d_buffer, material_table);
+      }
     const auto finish = [](BufferType &buffer, VectorType &v) {
       buffer.compress(VectorOperation::add);
       std::copy(buffer.begin(), buffer.end(), v.begin());

@@ -73,6 +73,7 @@ namespace RestShape
   ForwardProblem::unknowns_restarted()
   {
     pressure_prediction.forget();
+    nodal_volumes.forget_linearisation();
   }
 
   double

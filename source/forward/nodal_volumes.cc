@@ -76,6 +76,8 @@ namespace RestShape
         labels.push_back(c.label);
         cells.push_back(c);
       }
+    known = false;
+    linear_change.reinit(like);
     // Every rank holds a vector per label of any rank: compress is
     // collective.
     volumes.clear();
@@ -161,12 +163,62 @@ namespace RestShape
         v.compress(VectorOperation::add);
         v.update_ghost_values();
       }
+    if (known)
+      predict_changes(d);
+  }
+
+  void
+  NodalVolumes::predict_changes(const BufferType &d)
+  {
+    linear_change = 0;
+    for (unsigned int index = 0; index < cells.size(); ++index)
+      if (cells[index].owned)
+        {
+          const Cell &c      = cells[index];
+          double      change = 0;
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            change += gradient0[index][i] *
+                      (d.local_element(c.local[i]) - d0[index][i]);
+          for (unsigned int v = 0; v < vertices_per_cell; ++v)
+            linear_change.local_element(c.local[3 * v]) +=
+              vertex_share * change;
+        }
+    linear_change.compress(VectorOperation::add);
+    linear_change.update_ghost_values();
+  }
+
+  void
+  NodalVolumes::record_linearisation(const BufferType    &d,
+                                     const MaterialTable &materials)
+  {
+    gradient0.resize(cells.size());
+    d0.resize(cells.size());
+    pressure0.resize(linear_change.locally_owned_size() +
+                     linear_change.get_partitioner()->n_ghost_indices());
+    stiffness0.resize(pressure0.size());
+    known = false; // vertex() gives the condensed pressures
+    for (unsigned int index = 0; index < cells.size(); ++index)
+      {
+        const Cell &c    = cells[index];
+        gradient0[index] = volume_gradient(c, d);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          d0[index][i] = d.local_element(c.local[i]);
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          {
+            const Vertex n  = vertex(c, v, materials);
+            const auto   at = c.local[3 * v];
+            pressure0[at]   = n.pressure;
+            stiffness0[at]  = n.stiffness;
+          }
+      }
+    known = true;
   }
 
   NodalVolumes::Vertex
   NodalVolumes::vertex(const Cell          &cell,
                        const unsigned int   v,
-                       const MaterialTable &materials) const
+                       const MaterialTable &materials,
+                       const bool           shifted) const
   {
     const unsigned int x = cell.local[3 * v], y = cell.local[3 * v + 1];
     Vertex             result;
@@ -189,8 +241,28 @@ namespace RestShape
           result.pressure += share / result.rest * U.dU;
           result.stiffness += share / (result.rest * result.rest) * U.d2U;
         }
+    if (shifted && x < offsets.size())
+      result.pressure += offsets[x];
+    result.predicted =
+      known ? pressure0[x] + stiffness0[x] * linear_change.local_element(x) :
+              result.pressure;
     result.valid = true;
     return result;
+  }
+
+  std::vector<PressurePoint>
+  NodalVolumes::pressure_points(const MaterialTable &materials) const
+  {
+    std::vector<PressurePoint> points(
+      linear_change.locally_owned_size() +
+      linear_change.get_partitioner()->n_ghost_indices());
+    for (const Cell &c : cells)
+      for (unsigned int v = 0; v < vertices_per_cell; ++v)
+        {
+          const Vertex n         = vertex(c, v, materials, false);
+          points[c.local[3 * v]] = {n.J, n.pressure, n.stiffness * n.rest};
+        }
+    return points;
   }
 
   NodalVolumes::CellPressure
@@ -210,6 +282,7 @@ namespace RestShape
             return result;
           }
         result.pressure += vertex_share * n.pressure;
+        result.predicted += vertex_share * n.predicted;
         result.energy += vertex_share * rest_volume * law.volumetric(n.J).U;
       }
     return result;

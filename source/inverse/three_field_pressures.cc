@@ -11,8 +11,7 @@ namespace RestShape
   bool
   ThreeFieldPressures::enabled() const
   {
-    const auto &discretization = forward.scene_parameters().discretization;
-    return discretization.mixed && !discretization.nodal_pressure;
+    return forward.scene_parameters().discretization.mixed;
   }
 
   void
@@ -26,7 +25,7 @@ namespace RestShape
   {
     if (!enabled())
       return;
-    at_step = forward.cell_dilatations();
+    at_step = forward.pressure_points();
     if (!known)
       {
         pressure.resize(at_step.size());
@@ -44,7 +43,7 @@ namespace RestShape
   {
     if (!enabled())
       return;
-    const std::vector<CellDilatation> &moved = forward.cell_dilatations();
+    const std::vector<PressurePoint> &moved = forward.pressure_points();
     change.resize(at_step.size());
     for (unsigned int c = 0; c < at_step.size(); ++c)
       change[c] = (moved[c].J - at_step[c].J) / e;

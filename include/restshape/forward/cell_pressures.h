@@ -17,12 +17,14 @@
 
 namespace RestShape
 {
-  /// A cell's volumetric state at an assembly.
-  struct CellDilatation
+  /// The volumetric state of a point that carries a pressure of the
+  /// mixed formulation (a cell with a pressure of its own; a vertex of
+  /// the averaged nodal pressure) at an assembly.
+  struct PressurePoint
   {
-    double J   = 1; // mean dilatation: current over rest volume
+    double J   = 1; // volume ratio: current over rest volume
     double dU  = 0; // U'(J) (Pa): the condensed pressure, -p in compression
-    double d2U = 0; // U''(J) (Pa)
+    double d2U = 0; // its derivative in J (Pa)
   };
 
   class CellPressures
@@ -32,12 +34,12 @@ namespace RestShape
     void
     reset(const unsigned int n_cells)
     {
-      records.assign(n_cells, CellDilatation());
+      records.assign(n_cells, PressurePoint());
       offsets.clear();
     }
     /// Record the state of the cell of active index @p cell.
     void
-    record(const unsigned int cell, const CellDilatation &c)
+    record(const unsigned int cell, const PressurePoint &c)
     {
       if (cell < records.size())
         records[cell] = c;
@@ -57,7 +59,7 @@ namespace RestShape
     }
     /// The records of the last assembly (by active cell index; only the
     /// locally owned cells' are meaningful).
-    const std::vector<CellDilatation> &
+    const std::vector<PressurePoint> &
     last() const
     {
       return records;
@@ -70,8 +72,8 @@ namespace RestShape
     }
 
   private:
-    std::vector<CellDilatation> records;
-    std::vector<double>         offsets;
+    std::vector<PressurePoint> records;
+    std::vector<double>        offsets;
   };
 } // namespace RestShape
 

@@ -188,27 +188,27 @@ namespace RestShape
     /// averaged over its vertices, at update_nodal_volumes()' state (Pa).
     double
     nodal_cell_pressure(const unsigned int cell) const;
-    /// Mixed formulation with a pressure per cell: each cell's mean
-    /// dilatation, U'(J_mean) and U''(J_mean) at the last assembly, by
-    /// active cell index (the locally owned cells'; empty otherwise).
-    const std::vector<CellDilatation> &
-    cell_dilatations() const
-    {
-      return cell_pressures.last();
-    }
     /**
-     * Mixed formulation with a pressure per cell: from now on the
-     * assembly uses U'(J_mean) + @p offsets[c] (Pa, by active cell index)
-     * as the pressure of cell c, in the residual and the tangent, so that
-     * the derivative of the residual at the state the offsets were taken
-     * at is the three-field tangent with the pressures U'(J_mean) +
-     * offsets (cell_pressures.h); empty: the condensed pressure again.
+     * Mixed formulation: the state of each point that carries a pressure
+     * (a cell with a pressure of its own, by active cell index: its mean
+     * dilatation, U'(J_mean), U''(J_mean); a vertex of the averaged nodal
+     * pressure, by the local index of its x-DoF in the assembly's
+     * vectors: its volume ratio, its pressure and the derivative), at the
+     * last assembly. Only the locally owned cells' and the locally
+     * relevant vertices' entries are meaningful.
+     */
+    std::vector<PressurePoint>
+    pressure_points() const;
+    /**
+     * Mixed formulation: from now on the assembly uses U' + @p offsets
+     * (Pa, indexed as pressure_points()) as the pressure of each point, in
+     * the residual and the tangent, so that the derivative of the
+     * residual at the state the offsets were taken at is the three-field
+     * tangent with the pressures U' + offsets (cell_pressures.h); empty:
+     * the condensed pressures again.
      */
     void
-    set_pressure_offsets(std::vector<double> offsets)
-    {
-      cell_pressures.set_offsets(std::move(offsets));
-    }
+    set_pressure_offsets(std::vector<double> offsets);
     /// The contact conditions checked at the end of the last Newton solve
     /// with contact (ActiveSetConstraints::check_conditions()).
     const ContactConditions &

@@ -20,6 +20,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <restshape/base/linear_algebra_types.h>
+#include <restshape/forward/cell_pressures.h>
 #include <restshape/material/material_table.h>
 
 #include <array>
@@ -55,9 +56,10 @@ namespace RestShape
     /// is false where a vertex's volume ratio is not positive.
     struct CellPressure
     {
-      double pressure = 0;
-      double energy   = 0;
-      bool   valid    = true;
+      double pressure  = 0;
+      double energy    = 0;
+      double predicted = 0; // the tangent's (record_linearisation())
+      bool   valid     = true;
     };
 
     /// Of the cell of active index @p cell (locally owned), whose rest
@@ -66,6 +68,41 @@ namespace RestShape
     cell(const unsigned int   cell,
          const MaterialTable &materials,
          const double         rest_volume) const;
+
+    /**
+     * Record the linearisation of the vertices' pressures at the state of
+     * the last update(), whose current positions are X + @p d: each
+     * vertex's pressure and stiffness and each cell's volume gradient.
+     * The tangents of the states that follow take the pressure the
+     * three-field step predicts (as PressurePrediction does for a
+     * pressure per cell): p_n0 + k_n0 dv_n, with dv_n the linearised
+     * change of the vertex's volume since the record, not the condensed
+     * pressure, which carries the bulk modulus times the step's
+     * second-order change of volume. Collective.
+     */
+    void
+    record_linearisation(const BufferType &d, const MaterialTable &materials);
+    /// The state jumped (a new rest shape, a load step's start): the
+    /// tangent takes the condensed pressure until the next record.
+    void
+    forget_linearisation()
+    {
+      known = false;
+    }
+
+    /// Each vertex's volume ratio, pressure sum_L V_nL U_L'(J_n) / V_n and
+    /// its derivative in J_n at the last update(), at the local index of
+    /// its x-DoF (the other entries zero), without offsets.
+    std::vector<PressurePoint>
+    pressure_points(const MaterialTable &materials) const;
+    /// The vertices' pressures are shifted by @p offsets (Pa, indexed as
+    /// pressure_points(); empty: none), for the three-field tangent of
+    /// the direct inverse (ForwardProblem::set_pressure_offsets()).
+    void
+    set_pressure_offsets(std::vector<double> o)
+    {
+      offsets = std::move(o);
+    }
 
     /// tangent += sum_L V_nL U_L''(J_n) / V_n^2 g_n g_n^T (g_n = dv_n/dd)
     /// for every locally owned vertex, through @p constraints.
@@ -100,6 +137,11 @@ namespace RestShape
     static std::array<dealii::Point<3>, 4>
     positions(const Cell &cell, const BufferType &u);
 
+    /// linear_change at the state X + @p d, from the recorded
+    /// linearisation. Collective.
+    void
+    predict_changes(const BufferType &d);
+
     /// The volume of @p cell at positions(), signed: negative where it
     /// is inverted against the mesh cell.
     static double
@@ -114,13 +156,16 @@ namespace RestShape
     struct Vertex
     {
       double J = 0, rest = 0, pressure = 0, stiffness = 0;
-      bool   valid = false;
+      double predicted = 0; // the tangent's pressure (Pa)
+      bool   valid     = false;
     };
     /// Of @p cell's vertex @p v.
+    /// (The pressure with its offset, if @p shifted.)
     Vertex
     vertex(const Cell          &cell,
            const unsigned int   v,
-           const MaterialTable &materials) const;
+           const MaterialTable &materials,
+           const bool           shifted = true) const;
 
     std::vector<Cell> cells;   // owned and ghost
     std::vector<int>  of_cell; // active index -> cells, or -1
@@ -131,6 +176,15 @@ namespace RestShape
     // Per label, of that label's cells: at a vertex's x-DoF its rest
     // volume, at its y-DoF its current one (m^3).
     std::map<Label, BufferType> volumes;
+    // The linearisation of record_linearisation(): per cell (of cells)
+    // its volume gradient and its DoFs' values of d, per vertex (at its
+    // x-DoF's local index) its pressure and stiffness; at update() the
+    // vertices' linearised changes of volume since then (x-DoF).
+    bool                                known = false;
+    std::vector<std::array<double, 12>> gradient0, d0;
+    std::vector<double>                 pressure0, stiffness0;
+    std::vector<double>                 offsets; // set_pressure_offsets()
+    BufferType                          linear_change;
   };
 } // namespace RestShape
 

@@ -33,8 +33,8 @@ namespace RestShape
   public:
     explicit ThreeFieldPressures(ForwardProblem &forward);
 
-    /// Whether the forward problem has a pressure per cell (mixed, not
-    /// the averaged nodal pressure of linear tetrahedra).
+    /// Whether the forward problem is mixed (a pressure per cell, or per
+    /// vertex: the averaged nodal pressure of linear tetrahedra).
     bool
     enabled() const;
     /// The next step starts from the condensed pressures (a new load, a
@@ -58,10 +58,10 @@ namespace RestShape
     accept(const double alpha);
 
   private:
-    ForwardProblem             &forward;
-    std::vector<CellDilatation> at_step; // the cells at w_k
-    std::vector<double>         pressure, change;
-    bool                        known = false; // pressure is a step's
+    ForwardProblem            &forward;
+    std::vector<PressurePoint> at_step; // the cells at w_k
+    std::vector<double>        pressure, change;
+    bool                       known = false; // pressure is a step's
   };
 } // namespace RestShape
 
