@@ -318,6 +318,77 @@ namespace RestShape
     return pressure;
   }
 
+  std::vector<double>
+  ContactReport::recovered_pressures(const VectorType &raw_residual) const
+  {
+    const Discretization &discretization = contact.discretization;
+    const auto            facing         = [&](const ContactProblem::Face &face,
+                            const unsigned int          i) {
+      return face.normal * contact.candidates[i].normal <= -0.5;
+    };
+    // Summed over all ranks (the faces of a node may lie on several):
+    // vectors that take additions at ghost DoFs, read back ghosted.
+    const auto writable = [&]() {
+      VectorType v;
+      v.reinit(discretization.locally_owned_dofs(),
+               discretization.locally_relevant_dofs(),
+               discretization.communicator(),
+               true);
+      return v;
+    };
+    const auto summed = [&](VectorType &v) {
+      v.compress(VectorOperation::add);
+      return discretization.ghosted_copy(discretization.owned_copy(v));
+    };
+    // Each node's force (x slot) and the lumped area of its faces that
+    // face the obstacle (y slot).
+    VectorType node_sums = writable();
+    for (const ContactProblem::Candidate &c : contact.candidates)
+      if (c.owned && c.active)
+        node_sums[c.node.dofs[0]] += contact.contact_force(c, raw_residual);
+    for (const ContactProblem::Face &face : contact.faces)
+      for (unsigned int k = 0; k < face.nodes.size(); ++k)
+        if (facing(face, face.nodes[k]))
+          node_sums[contact.candidates[face.nodes[k]].node.dofs[1]] +=
+            face.lumped[k];
+    const VectorType nodes = summed(node_sums);
+    // Each face's traction times its area (x slot) and area (y slot) at
+    // its nodes that it faces the obstacle at.
+    VectorType face_sums = writable();
+    for (const ContactProblem::Face &face : contact.faces)
+      {
+        double received = 0, area = 0;
+        for (unsigned int k = 0; k < face.nodes.size(); ++k)
+          {
+            const auto  &dofs  = contact.candidates[face.nodes[k]].node.dofs;
+            const double share = nodes[dofs[1]];
+            area += face.lumped[k];
+            if (facing(face, face.nodes[k]) && share > 0)
+              received += nodes[dofs[0]] * face.lumped[k] / share;
+          }
+        for (unsigned int k = 0; k < face.nodes.size(); ++k)
+          if (facing(face, face.nodes[k]))
+            {
+              const auto &dofs = contact.candidates[face.nodes[k]].node.dofs;
+              face_sums[dofs[0]] += received;
+              face_sums[dofs[1]] += area;
+            }
+      }
+    const VectorType    faces = summed(face_sums);
+    std::vector<double> pressure(contact.candidates.size(), 0.);
+    for (unsigned int i = 0; i < contact.candidates.size(); ++i)
+      {
+        const ContactProblem::Candidate &c = contact.candidates[i];
+        if (!c.owned || !c.active)
+          continue;
+        if (faces[c.node.dofs[1]] > 0)
+          pressure[i] = faces[c.node.dofs[0]] / faces[c.node.dofs[1]];
+        else if (c.active)
+          pressure[i] = nodes[c.node.dofs[0]] / c.area_lumped;
+      }
+    return pressure;
+  }
+
   std::pair<double, double>
   ContactReport::pressure_range(const VectorType &raw_residual) const
   {
@@ -373,7 +444,7 @@ namespace RestShape
   ContactReport::nodal_fields(const VectorType &raw_residual,
                               const double      length_scale) const
   {
-    const std::vector<double> pressure = pressures(raw_residual);
+    const std::vector<double> pressure = recovered_pressures(raw_residual);
     VectorType                fields   = contact.discretization.zero_vector();
     // Off the contact candidates: the signed distance of the node to the
     // obstacle and no pressure. (Not NaN: the writer evaluates each field

@@ -56,7 +56,8 @@ namespace RestShape
     max_penetration(const bool eligible_only) const;
     /**
      * Per node: x slot 1 for active nodes, y slot the gap (in metres times
-     * @p length_scale), z slot the contact pressure (Pa).
+     * @p length_scale), z slot the recovered contact pressure (Pa,
+     * recovered_pressures()).
      */
     VectorType
     nodal_fields(const VectorType &raw_residual,
@@ -85,8 +86,26 @@ namespace RestShape
     n_outside() const;
 
 
+    /**
+     * The contact pressure as a field (Pa, per candidate; owned entries):
+     * each node's contact force is shared among the surface faces around
+     * it that face the obstacle, in proportion to their lumped areas at
+     * the node; each face's traction is what it received over its area;
+     * a node's pressure is the area-weighted mean of its faces' tractions
+     * (the force over its lumped area where no face around it faces the
+     * obstacle). A uniform pressure is exact, the total force is kept
+     * (sum of the faces' tractions times their areas), and a node that
+     * carries the force of a larger region than its own area (at the rim
+     * of a contact zone, on the crease of a faceted skull) shares it with
+     * its faces instead of showing it as a single-node peak. Zero at
+     * inactive nodes.
+     */
+    std::vector<double>
+    recovered_pressures(const VectorType &raw_residual) const;
+
   private:
-    /// Contact pressure of every candidate (Pa; 0 where inactive).
+    /// Contact pressure of every candidate (Pa; 0 where inactive): its
+    /// force over its share of the faces around it.
     std::vector<double>
     pressures(const VectorType &raw_residual) const;
 
