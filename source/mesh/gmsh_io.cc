@@ -6,6 +6,7 @@
 #include <restshape/mesh/child_reader.h>
 #include <restshape/mesh/gmsh_io.h>
 #include <restshape/mesh/gmsh_sections.h>
+#include <restshape/mesh/mesh_parameters.h>
 #include <restshape/mesh/mesh_transforms.h>
 #include <unistd.h>
 
@@ -27,9 +28,8 @@ namespace RestShape
 
   namespace
   {
-    const std::string file_parameter = "Mesh/File";
-    const std::string target_name    = "target_position";
-    const std::string mass_name      = "image_mass_ratio";
+    const std::string target_name = "target_position";
+    const std::string mass_name   = "image_mass_ratio";
     /// Bounds of an image-to-rest mass ratio (the volume ratio of a cell
     /// between the image and the rest shape): beyond them the file is not
     /// a rest shape of soft tissue.
@@ -68,7 +68,7 @@ namespace RestShape
           const auto &map   = nodes ? node_index : cell_of_element;
           if (components != (nodes ? 3 : 1) || tags.size() != map.size())
             throw InputError(file,
-                             file_parameter,
+                             mesh_file_parameter,
                              "its " + name + " data do not cover every " +
                                (nodes ? "node" : "cell") +
                                " once; expected a rest_shape.msh as RestShape "
@@ -82,7 +82,7 @@ namespace RestShape
               const auto it = map.find(tags[k]);
               if (it == map.end())
                 throw InputError(file,
-                                 file_parameter,
+                                 mesh_file_parameter,
                                  name + " refers to " +
                                    std::to_string(tags[k]) +
                                    ", which is not in the mesh");
@@ -93,7 +93,7 @@ namespace RestShape
                                    data[3 * k + 2]);
                   if (!std::isfinite(p.norm_square()))
                     throw InputError(file,
-                                     file_parameter,
+                                     mesh_file_parameter,
                                      name + " of node " +
                                        std::to_string(tags[k]) +
                                        " is not a finite point; expected "
@@ -103,7 +103,7 @@ namespace RestShape
               else if (!(data[k] >= smallest_mass_ratio &&
                          data[k] <= largest_mass_ratio))
                 throw InputError(file,
-                                 file_parameter,
+                                 mesh_file_parameter,
                                  name + " of element " +
                                    std::to_string(tags[k]) + " is " +
                                    number_text(data[k]) + "; expected " +
@@ -116,7 +116,7 @@ namespace RestShape
         }
       if (mesh.targets.empty() != mesh.mass_ratios.empty())
         throw InputError(file,
-                         file_parameter,
+                         mesh_file_parameter,
                          "it has " +
                            (mesh.targets.empty() ? mass_name : target_name) +
                            " data without " +
@@ -258,7 +258,7 @@ namespace RestShape
                 continue;
               const std::string name = line.substr(first + 1, last - first - 1);
               if (LabelNames::is_valid_name(name) && !names.find(name))
-                names.add(Label(tag), name, file, file_parameter);
+                names.add(Label(tag), name, file, mesh_file_parameter);
             }
           break;
         }
@@ -278,23 +278,23 @@ namespace RestShape
     std::error_code ec;
     if (!fs::exists(file, ec))
       throw InputError(file,
-                       file_parameter,
+                       mesh_file_parameter,
                        "no such file; expected a gmsh .msh mesh");
     if (!fs::is_regular_file(file, ec) || ::access(file.c_str(), R_OK) != 0)
       throw InputError(file,
-                       file_parameter,
+                       mesh_file_parameter,
                        "not a readable file; expected a gmsh .msh mesh");
-    check_gmsh_section_counts(file, file_parameter);
+    check_gmsh_section_counts(file, mesh_file_parameter);
     // gmsh's reader crashes or corrupts its heap on some malformed files
     // (gmsh 2 elements with bad partition tags, found by fuzzing): it runs
     // in a child process, and a crash is an input error.
     MeshDescription mesh =
       read_in_child_process([&]() { return read_gmsh_data(file, length_unit); },
                             file,
-                            file_parameter,
+                            mesh_file_parameter,
                             "a well-formed gmsh .msh mesh");
     mesh.names = read_gmsh_label_names(file);
-    return finish_read_mesh(std::move(mesh), file, file_parameter);
+    return finish_read_mesh(std::move(mesh), file, mesh_file_parameter);
   }
 
   namespace
@@ -325,7 +325,7 @@ namespace RestShape
                 if (!std::isfinite(coordinates[3 * n + d]))
                   throw InputError(
                     file,
-                    file_parameter,
+                    mesh_file_parameter,
                     "node " + std::to_string(node_tags[n]) +
                       " has a coordinate that is not a finite number");
               index[node_tags[n]] = n;
@@ -346,7 +346,7 @@ namespace RestShape
               const int label = physical.empty() ? entity : physical[0];
               if (label < 0)
                 throw InputError(file,
-                                 file_parameter,
+                                 mesh_file_parameter,
                                  "volume tag " + std::to_string(label) +
                                    " is not a valid label; expected 0.." +
                                    std::to_string(max_label));
@@ -360,7 +360,7 @@ namespace RestShape
                   if (types[t] != 4 && types[t] != 5)
                     throw InputError(
                       file,
-                      file_parameter,
+                      mesh_file_parameter,
                       "the mesh has 3d elements of gmsh type " +
                         std::to_string(types[t]) +
                         "; expected only linear tetrahedra (4) or "
@@ -381,7 +381,7 @@ namespace RestShape
                           if (it == index.end())
                             throw InputError(
                               file,
-                              file_parameter,
+                              mesh_file_parameter,
                               "element " + std::to_string(element_tags[t][e]) +
                                 " refers to a node that does not exist");
                           cell.vertices[v] = it->second;
@@ -407,7 +407,7 @@ namespace RestShape
           gmsh::logger::getLastError(message);
           gmsh::finalize();
           throw InputError(file,
-                           file_parameter,
+                           mesh_file_parameter,
                            "not a valid gmsh mesh (" +
                              (message.empty() ? std::string("unreadable") :
                                                 message) +

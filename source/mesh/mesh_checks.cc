@@ -1,6 +1,7 @@
 // Checks of a mesh as read.
 #include <restshape/base/input_error.h>
 #include <restshape/mesh/mesh_checks.h>
+#include <restshape/mesh/mesh_parameters.h>
 
 #include <array>
 #include <cmath>
@@ -8,11 +9,6 @@
 namespace RestShape
 {
   using namespace dealii;
-
-  namespace
-  {
-    const std::string file_parameter = "Mesh/File";
-  }
 
   namespace
   {
@@ -61,7 +57,7 @@ namespace RestShape
       for (unsigned int d = 0; d < 3; ++d)
         if (!std::isfinite(mesh.vertices[v][d]))
           throw InputError(file,
-                           file_parameter,
+                           mesh_file_parameter,
                            "vertex " + std::to_string(v + 1) +
                              " has a coordinate that is not a finite number");
 
@@ -87,7 +83,7 @@ namespace RestShape
       }
     if (n_inverted + n_degenerate > 0)
       throw InputError(file,
-                       file_parameter,
+                       mesh_file_parameter,
                        std::to_string(n_inverted) + " inverted and " +
                          std::to_string(n_degenerate) +
                          " zero-volume cells (first: cell " +

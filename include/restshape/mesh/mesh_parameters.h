@@ -8,6 +8,9 @@
 
 namespace RestShape
 {
+  /// The parameter that names the mesh file, for error messages.
+  inline const std::string mesh_file_parameter = "Mesh/File";
+
   enum class CellType
   {
     tetrahedra,
