@@ -1,5 +1,6 @@
 #include <deal.II/distributed/tria.h>
 
+#include <restshape/app/rest_shape_file.h>
 #include <restshape/app/run_size.h>
 #include <restshape/app/scenario.h>
 #include <restshape/app/simulator.h>
@@ -124,7 +125,7 @@ namespace RestShape
     prepare_output();
 
     SolveStatistics           stats;
-    std::optional<VectorType> guess;
+    std::optional<VectorType> guess = target_guess();
     for (unsigned int cycle = 0; cycle <= parameters.refinement.cycles; ++cycle)
       {
         if (cycle > 0)
@@ -132,7 +133,10 @@ namespace RestShape
         pcout << "Cycle " << cycle << ": "
               << mesh->triangulation().n_global_active_cells() << " cells, "
               << forward->discretization().dof_handler().n_dofs() << " DoFs"
-              << (guess ? ", starting from the previous cycle's solution" : "")
+              << (!guess     ? "" :
+                  cycle == 0 ? ", starting from the equilibrium (else the "
+                               "target) the rest mesh carries" :
+                               ", starting from the previous cycle's solution")
               << std::endl;
         const VectorType *start = guess ? &*guess : nullptr;
         stats = parameters.inverse.enabled ? solve_inverse(cycle, rest, start) :
@@ -248,6 +252,29 @@ namespace RestShape
       }
   }
 
+  std::optional<VectorType>
+  Simulator::target_guess() const
+  {
+    // A forward run from a rest_shape.msh: Newton starts at the full load
+    // from the equilibrium the inverse run found (the file carries it;
+    // an older file: its target). A rest shape may lie beyond the
+    // obstacle (the one-sided rule of the inverse), and a solve ramped
+    // from it would first push those nodes onto the obstacle: on the
+    // cutting skull at P2 that inverted cells. If Newton fails from
+    // there, the solve starts again from the rest shape.
+    if (parameters.inverse.enabled || mesh->targets().empty())
+      return std::nullopt;
+    if (std::optional<VectorType> d =
+          equilibrium_of_rest_shape_file(*forward, *mesh))
+      return d;
+    const std::vector<Point<3>> &targets = mesh->targets();
+    const auto               &vertices   = mesh->triangulation().get_vertices();
+    std::vector<Tensor<1, 3>> shift(vertices.size());
+    for (unsigned int v = 0; v < targets.size() && v < vertices.size(); ++v)
+      shift[v] = targets[v] - vertices[v];
+    return forward->discretization().interpolate_vertex_field(shift);
+  }
+
   void
   Simulator::refine(VectorType &rest, std::optional<VectorType> &guess)
   {
@@ -293,7 +320,18 @@ namespace RestShape
   Simulator::initial_rest_shape() const
   {
     if (parameters.mesh.rest_shape_file.empty())
-      return forward->discretization().zero_vector();
+      {
+        // A quadratic rest shape's curved edges (a rest_shape.msh of P2).
+        if (std::optional<VectorType> w =
+              rest_shape_of_edge_nodes(*forward, *mesh))
+          {
+            pcout << "Rest shape: the edge nodes of the quadratic cells "
+                     "where the mesh file puts them"
+                  << std::endl;
+            return *w;
+          }
+        return forward->discretization().zero_vector();
+      }
     const std::vector<Point<3>> rest =
       mesh->read_rest_shape(parameters.mesh.rest_shape_file);
     const auto               &vertices = mesh->triangulation().get_vertices();
@@ -519,7 +557,14 @@ namespace RestShape
       comm,
       file,
       [&]() {
-        mesh->write_gmsh(rest_positions, file, image_mass_ratios(*forward));
+        // On one rank: each node's equilibrium and a quadratic rest
+        // shape's edge nodes, for the round trip.
+        mesh->write_gmsh(rest_positions,
+                         file,
+                         image_mass_ratios(*forward),
+                         Utilities::MPI::n_mpi_processes(comm) == 1 ?
+                           rest_nodes_of(*forward) :
+                           LabelledMesh::RestNodes());
       },
       true);
   }

@@ -44,6 +44,8 @@ namespace RestShape
       out.put<std::uint64_t>(mesh.mass_ratios.size());
       for (const double r : mesh.mass_ratios)
         out.put<double>(r);
+      put_points(mesh.rest_nodes.edge_nodes, out);
+      put_points(mesh.rest_nodes.equilibria, out);
       return out.str();
     }
 
@@ -64,6 +66,8 @@ namespace RestShape
       mesh.mass_ratios.resize(in.checked_count(8));
       for (double &r : mesh.mass_ratios)
         r = in.get<double>();
+      mesh.rest_nodes.edge_nodes = get_points(in);
+      mesh.rest_nodes.equilibria = get_points(in);
       return mesh;
     }
   } // namespace

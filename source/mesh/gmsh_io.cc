@@ -1,6 +1,5 @@
-// Reading and writing gmsh meshes (the gmsh library reads, we write 2.2 ASCII).
+// Reading gmsh meshes with the gmsh library (every .msh version).
 #include <gmsh.h>
-#include <restshape/base/atomic_file.h>
 #include <restshape/base/input_error.h>
 #include <restshape/base/label_values.h>
 #include <restshape/mesh/child_reader.h>
@@ -11,16 +10,11 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <map>
 #include <numeric>
-#include <set>
-#include <sstream>
 
 namespace RestShape
 {
@@ -28,8 +22,13 @@ namespace RestShape
 
   namespace
   {
-    const std::string target_name = "target_position";
-    const std::string mass_name   = "image_mass_ratio";
+    const std::string &target_name      = gmsh_target_view;
+    const std::string &mass_name        = gmsh_mass_ratio_view;
+    const std::string &equilibrium_name = gmsh_equilibrium_view;
+    /// gmsh's element types: linear and quadratic tetrahedra, hexahedra.
+    constexpr int gmsh_tetrahedron = 4, gmsh_hexahedron = 5,
+                  gmsh_tetrahedron_10 = 11;
+    const auto &tet10_edges           = gmsh_tet10_edges;
     /// Bounds of an image-to-rest mass ratio (the volume ratio of a cell
     /// between the image and the rest shape): beyond them the file is not
     /// a rest shape of soft tissue.
@@ -55,7 +54,8 @@ namespace RestShape
                                     std::to_string(gmsh::view::getIndex(view)) +
                                     "].Name",
                                   name);
-          if (name != target_name && name != mass_name)
+          if (name != target_name && name != mass_name &&
+              name != equilibrium_name)
             continue;
           std::string              type;
           std::vector<std::size_t> tags;
@@ -64,7 +64,7 @@ namespace RestShape
           int                      components = 0;
           gmsh::view::getHomogeneousModelData(
             view, 0, type, tags, data, time, components);
-          const bool  nodes = (name == target_name);
+          const bool  nodes = (name != mass_name);
           const auto &map   = nodes ? node_index : cell_of_element;
           if (components != (nodes ? 3 : 1) || tags.size() != map.size())
             throw InputError(file,
@@ -73,9 +73,9 @@ namespace RestShape
                                (nodes ? "node" : "cell") +
                                " once; expected a rest_shape.msh as RestShape "
                                "writes it");
-          if (nodes)
+          if (name == target_name)
             mesh.targets.resize(mesh.vertices.size());
-          else
+          else if (name == mass_name)
             mesh.mass_ratios.resize(mesh.cells.size());
           for (unsigned int k = 0; k < tags.size(); ++k)
             {
@@ -98,7 +98,14 @@ namespace RestShape
                                        std::to_string(tags[k]) +
                                        " is not a finite point; expected "
                                        "three finite coordinates");
-                  mesh.targets[it->second] = p * length_unit;
+                  if (name == target_name)
+                    mesh.targets[it->second] = p * length_unit;
+                  else
+                    {
+                      mesh.rest_nodes.equilibria.push_back(
+                        mesh.vertices[it->second]);
+                      mesh.rest_nodes.equilibria.push_back(p * length_unit);
+                    }
                 }
               else if (!(data[k] >= smallest_mass_ratio &&
                          data[k] <= largest_mass_ratio))
@@ -124,112 +131,31 @@ namespace RestShape
                            "; expected both (a rest_shape.msh) or neither");
     }
 
-    /// gmsh 2.2 $NodeData/$ElementData of a rest shape.
+    /// The edge nodes of the 10-node tetrahedron @p element (its nodes
+    /// @p nodes, its vertices @p cell) into @p mesh.rest_nodes.
     void
-    write_rest_shape_data(std::ostream            &out,
-                          const std::vector<bool> &used,
-                          const RestShapeData     &rest,
-                          const double             length_unit)
+    add_edge_nodes(const std::size_t                          element,
+                   const std::size_t                         *nodes,
+                   const CellData<3>                         &cell,
+                   const std::map<std::size_t, unsigned int> &index,
+                   const std::string                         &file,
+                   MeshDescription                           &mesh)
     {
-      out << "$NodeData\n1\n\"" << target_name << "\"\n1\n0\n3\n0\n3\n"
-          << std::count(used.begin(), used.end(), true) << '\n';
-      for (unsigned int v = 0; v < used.size(); ++v)
-        if (used[v])
-          {
-            const Point<3> p = rest.target(v) / length_unit;
-            out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-          }
-      out << "$EndNodeData\n$ElementData\n1\n\"" << mass_name
-          << "\"\n1\n0\n3\n0\n1\n"
-          << rest.mass_ratios.size() << '\n';
-      for (unsigned int c = 0; c < rest.mass_ratios.size(); ++c)
-        out << c + 1 << ' ' << rest.mass_ratios[c] << '\n';
-      out << "$EndElementData\n";
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          const auto it = index.find(nodes[4 + k]);
+          if (it == index.end())
+            throw InputError(file,
+                             mesh_file_parameter,
+                             "element " + std::to_string(element) +
+                               " refers to a node that does not exist");
+          for (const unsigned int v : tet10_edges[k])
+            mesh.rest_nodes.edge_nodes.push_back(
+              mesh.vertices[cell.vertices[v]]);
+          mesh.rest_nodes.edge_nodes.push_back(mesh.vertices[it->second]);
+        }
     }
 
-    /// One cell to write: its label and vertices in deal.II's order.
-    using CellWriter =
-      std::function<void(Label, const std::vector<unsigned int> &)>;
-    /// Calls its argument once per cell, in the order of the file.
-    using CellVisitor = std::function<void(const CellWriter &)>;
-
-    /// gmsh 2.2 $PhysicalNames of the labels of the cells that have names.
-    void
-    write_physical_names(std::ostream                     &out,
-                         const CellVisitor                &cells,
-                         const LabelNames                 &names,
-                         const std::map<int, std::string> &surface_names)
-    {
-      std::set<Label> labels;
-      cells([&](const Label label, const std::vector<unsigned int> &) {
-        if (!names.name(label).empty())
-          labels.insert(label);
-      });
-      if (labels.empty() && surface_names.empty())
-        return;
-      out << "$PhysicalNames\n" << labels.size() + surface_names.size() << '\n';
-      for (const auto &[tag, name] : surface_names)
-        out << "2 " << tag << " \"" << name << "\"\n";
-      for (const Label l : labels)
-        out << "3 " << l << " \"" << names.name(l) << "\"\n";
-      out << "$EndPhysicalNames\n";
-    }
-
-    /// write_gmsh() for the cells that @p cells visits (@p n_vertices
-    /// vertex indices, @p n_cells cells).
-    void
-    write_cells(const CellVisitor                           &cells,
-                const unsigned int                           n_vertices,
-                const unsigned int                           n_cells,
-                const std::function<Point<3>(unsigned int)> &position,
-                const double                                 length_unit,
-                const std::string                           &file,
-                const RestShapeData                         *rest,
-                const LabelNames                            &names,
-                const std::vector<SurfaceTriangle>          &surfaces      = {},
-                const std::map<int, std::string>            &surface_names = {})
-    {
-      std::vector<bool> used(n_vertices, false);
-      cells([&](Label, const std::vector<unsigned int> &vertices) {
-        for (const unsigned int v : vertices)
-          used[v] = true;
-      });
-      write_file_atomically(
-        file,
-        [&](std::ostream &out) {
-          out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
-          write_physical_names(out, cells, names, surface_names);
-          out << "$Nodes\n"
-              << std::count(used.begin(), used.end(), true) << '\n'
-              << std::setprecision(16);
-          for (unsigned int v = 0; v < used.size(); ++v)
-            if (used[v])
-              {
-                const Point<3> p = position(v) / length_unit;
-                out << v + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << p[2]
-                    << '\n';
-              }
-          out << "$EndNodes\n$Elements\n" << n_cells + surfaces.size() << '\n';
-          // gmsh numbers hexahedron vertices counter-clockwise per face.
-          static const unsigned int hex_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
-          unsigned int              n            = 0;
-          cells([&](const Label label, const std::vector<unsigned int> &v) {
-            const bool tet = v.size() == 4;
-            out << ++n << (tet ? " 4 2 " : " 5 2 ") << label << ' ' << label;
-            for (unsigned int k = 0; k < v.size(); ++k)
-              out << ' ' << v[tet ? k : hex_order[k]] + 1;
-            out << '\n';
-          });
-          for (const SurfaceTriangle &t : surfaces)
-            out << ++n << " 2 2 " << t.tag << ' ' << t.tag << ' '
-                << t.vertices[0] + 1 << ' ' << t.vertices[1] + 1 << ' '
-                << t.vertices[2] + 1 << '\n';
-          out << "$EndElements\n";
-          if (rest != nullptr)
-            write_rest_shape_data(out, used, *rest, length_unit);
-        },
-        "Output/Directory");
-    }
   } // namespace
 
   LabelNames
@@ -357,15 +283,21 @@ namespace RestShape
                 types, element_tags, element_nodes, dim, entity);
               for (unsigned int t = 0; t < types.size(); ++t)
                 {
-                  if (types[t] != 4 && types[t] != 5)
+                  if (types[t] != gmsh_tetrahedron &&
+                      types[t] != gmsh_hexahedron &&
+                      types[t] != gmsh_tetrahedron_10)
                     throw InputError(
                       file,
                       mesh_file_parameter,
                       "the mesh has 3d elements of gmsh type " +
                         std::to_string(types[t]) +
-                        "; expected only linear tetrahedra (4) or "
+                        "; expected only tetrahedra (4, or 11 with the "
+                        "edge nodes of a quadratic rest shape) or "
                         "hexahedra (5)");
-                  const unsigned int n = (types[t] == 4 ? 4 : 8);
+                  const bool quadratic = types[t] == gmsh_tetrahedron_10;
+                  const unsigned int n =
+                    types[t] == gmsh_hexahedron ? 8 : 4; // vertices
+                  const unsigned int stride = quadratic ? 10 : n;
                   // gmsh numbers hexahedron vertices counter-clockwise per
                   // face.
                   static const unsigned int hex_order[8] = {
@@ -376,8 +308,8 @@ namespace RestShape
                       for (unsigned int v = 0; v < n; ++v)
                         {
                           const auto it = index.find(
-                            element_nodes[t]
-                                         [n * e + (n == 4 ? v : hex_order[v])]);
+                            element_nodes[t][stride * e +
+                                             (n == 4 ? v : hex_order[v])]);
                           if (it == index.end())
                             throw InputError(
                               file,
@@ -387,6 +319,13 @@ namespace RestShape
                           cell.vertices[v] = it->second;
                         }
                       cell.material_id = label;
+                      if (quadratic)
+                        add_edge_nodes(element_tags[t][e],
+                                       &element_nodes[t][stride * e],
+                                       cell,
+                                       index,
+                                       file,
+                                       result);
                       result.cells.push_back(cell);
                       cell_of_element[element_tags[t][e]] =
                         result.cells.size() - 1;
@@ -438,79 +377,5 @@ namespace RestShape
     mesh                   = select_cells(mesh, all);
     mesh.names             = names;
     return mesh;
-  }
-
-  void
-  write_gmsh(const MeshDescription              &mesh,
-             const double                        length_unit,
-             const std::string                  &file,
-             const std::vector<SurfaceTriangle> &surfaces,
-             const std::map<int, std::string>   &surface_names)
-  {
-    const CellVisitor cells = [&](const CellWriter &write) {
-      for (const auto &cell : mesh.cells)
-        write(cell.material_id, cell.vertices);
-    };
-    write_cells(
-      cells,
-      mesh.vertices.size(),
-      mesh.cells.size(),
-      [&](const unsigned int v) { return mesh.vertices[v]; },
-      length_unit,
-      file,
-      nullptr,
-      mesh.names,
-      surfaces,
-      surface_names);
-  }
-
-  void
-  write_gmsh(const Triangulation<3>                      &tria,
-             const std::function<Point<3>(unsigned int)> &position,
-             const double                                 length_unit,
-             const std::string                           &file,
-             const RestShapeData                         *rest,
-             const LabelNames                            &names)
-  {
-    std::vector<unsigned int> vertices;
-    const CellVisitor         cells = [&](const CellWriter &write) {
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          vertices.resize(cell->n_vertices());
-          for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-            vertices[v] = cell->vertex_index(v);
-          write(cell->material_id(), vertices);
-        }
-    };
-    write_cells(cells,
-                tria.n_vertices(),
-                tria.n_active_cells(),
-                position,
-                length_unit,
-                file,
-                rest,
-                names);
-  }
-
-  void
-  write_gmsh(const MeshDescription                       &mesh,
-             const std::function<Point<3>(unsigned int)> &position,
-             const double                                 length_unit,
-             const std::string                           &file,
-             const RestShapeData                         *rest,
-             const LabelNames                            &names)
-  {
-    const CellVisitor cells = [&](const CellWriter &write) {
-      for (const auto &cell : mesh.cells)
-        write(cell.material_id, cell.vertices);
-    };
-    write_cells(cells,
-                mesh.vertices.size(),
-                mesh.cells.size(),
-                position,
-                length_unit,
-                file,
-                rest,
-                names);
   }
 } // namespace RestShape

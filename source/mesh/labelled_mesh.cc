@@ -189,6 +189,7 @@ namespace RestShape
         // Coarse cells keep the order of the description.
         mass_ratios    = std::move(mesh.mass_ratios);
         vertex_targets = std::move(mesh.targets);
+        rest_nodes     = std::move(mesh.rest_nodes);
         return;
       }
     LocalPart part = local_part(mesh, *partition, tria->get_communicator());
@@ -198,6 +199,7 @@ namespace RestShape
     n_whole_vertices = mesh.vertices.size();
     mass_ratios      = std::move(part.mass_ratios);
     vertex_targets   = std::move(part.targets);
+    rest_nodes       = std::move(mesh.rest_nodes); // by position
     of_owned_cell.assign(tria->n_vertices(), false);
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
@@ -378,7 +380,8 @@ namespace RestShape
   void
   LabelledMesh::write_gmsh(const std::vector<Point<3>> &positions,
                            const std::string           &file,
-                           const std::vector<double>   &rest_mass_ratios) const
+                           const std::vector<double>   &rest_mass_ratios,
+                           const RestNodes             &nodes) const
   {
     RestShapeData rest;
     rest.mass_ratios    = rest_mass_ratios;
@@ -389,6 +392,12 @@ namespace RestShape
         rest.target          = [&](const unsigned int v) {
           return vertex_targets.empty() ? vertices[v] : vertex_targets[v];
         };
+        if (!nodes.equilibria.empty())
+          rest.equilibrium = [&](const unsigned int v) {
+            return nodes.equilibria[v];
+          };
+        rest.edge_nodes      = nodes.edge_rest;
+        rest.edge_equilibria = nodes.edge_equilibria;
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           RestShape::write_gmsh(
             *tria,

@@ -29,6 +29,7 @@ namespace RestShape
   {
     MeshDescription result;
     result.cells.reserve(cells.size());
+    result.rest_nodes                = mesh.rest_nodes; // by position
     const unsigned int        unused = numbers::invalid_unsigned_int;
     std::vector<unsigned int> new_index(mesh.vertices.size(), unused);
     for (const unsigned int c : cells)

@@ -57,6 +57,30 @@ namespace RestShape
                     mm_per_m);
     }
 
+    /// A forward run from a rest_shape.msh that carries the equilibrium
+    /// of the inverse run that wrote it: how far this run's equilibrium
+    /// is from it (the round trip; where the target crosses the obstacle
+    /// the error against the target includes what no equilibrium reaches).
+    void
+    set_equilibrium_distance(const PostprocessInput &in)
+    {
+      const RestShapeNodes &nodes = in.mesh.rest_shape_nodes();
+      if (nodes.equilibria.empty())
+        return;
+      const RestShapeNodeLookup    lookup(nodes);
+      const std::vector<Point<3>> &vertices =
+        in.mesh.triangulation().get_vertices();
+      std::vector<Point<3>> equilibria(vertices.size());
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        equilibria[v] = lookup.equilibrium(vertices[v]).value_or(vertices[v]);
+      const auto [mean_e, max_e] = distance_to(in.forward, equilibria);
+      in.summary.set("equilibrium_distance_mean_mm", mean_e * mm_per_m);
+      in.summary.set("equilibrium_distance_max_mm", max_e * mm_per_m);
+      in.pcout << "  Equilibrium vs the equilibrium carried by "
+               << in.parameters.mesh.file << ": mean " << mean_e * mm_per_m
+               << " mm, max " << max_e * mm_per_m << " mm" << std::endl;
+    }
+
     /// A forward run from a rest shape: how far the equilibrium is from
     /// the mesh geometry, or from the target a rest_shape.msh carries.
     void
@@ -78,6 +102,7 @@ namespace RestShape
                      "  Equilibrium vs the target carried by " + p.mesh.file)
                << ": mean " << mean_e * mm_per_m << " mm, max "
                << max_e * mm_per_m << " mm" << std::endl;
+      set_equilibrium_distance(in);
     }
   } // namespace
 

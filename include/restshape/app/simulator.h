@@ -92,6 +92,10 @@ namespace RestShape
     /// refinement/Transfer solution, carry the displacement into @p guess
     /// and the rest displacement into @p rest; otherwise @p rest = 0 and
     /// @p guess is empty.
+    /// The target of a rest mesh that carries one, as the first guess of
+    /// a forward run's Newton (none in inverse runs or without a target).
+    std::optional<VectorType>
+    target_guess() const;
     void
     refine(VectorType &rest, std::optional<VectorType> &guess);
     /// @p guess: Newton's initial displacement at the full load (nullptr:

@@ -41,6 +41,17 @@ namespace RestShape
   LabelNames
   read_gmsh_label_names(const std::string &file);
 
+  /// The edges of gmsh's 10-node tetrahedron: its nodes 4 to 9 join these
+  /// pairs of its vertices (deal.II's vertex order is gmsh's).
+  constexpr unsigned int gmsh_tet10_edges[6][2] =
+    {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {2, 3}, {1, 3}};
+
+  /// The names of a rest shape's data in a gmsh file: node data of the
+  /// target and equilibrium positions, element data of the mass ratios.
+  inline const std::string gmsh_target_view      = "target_position";
+  inline const std::string gmsh_equilibrium_view = "equilibrium_position";
+  inline const std::string gmsh_mass_ratio_view  = "image_mass_ratio";
+
   /// What a rest shape carries besides its geometry (MeshDescription).
   struct RestShapeData
   {
@@ -49,6 +60,14 @@ namespace RestShape
     /// Per active cell, in order: its mass in the image over its density
     /// times its volume in the rest shape.
     std::vector<double> mass_ratios;
+    /// A quadratic rest shape (tetrahedra only): per active cell, in
+    /// order, the rest positions (m) of its six edge nodes in the order
+    /// of gmsh_tet10_edges; empty: linear cells.
+    std::vector<std::array<dealii::Point<3>, 6>> edge_nodes;
+    /// Where the run that writes the file left vertex v (m), and per cell
+    /// its edge nodes (as edge_nodes); unset: not written.
+    std::function<dealii::Point<3>(unsigned int)> equilibrium;
+    std::vector<std::array<dealii::Point<3>, 6>>  edge_equilibria;
   };
 
   /**

@@ -13,6 +13,7 @@
 #include <restshape/mesh/mesh_description.h>
 #include <restshape/mesh/mesh_parameters.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -114,10 +115,28 @@ namespace RestShape
      * else the mesh's vertices) and @p rest_mass_ratios (by cell_index()).
      * Not for hexahedra on several ranks (no rank knows the whole mesh).
      */
+    /// What write_gmsh() adds to a rest shape on one rank (not on a
+    /// partitioned mesh): each vertex's equilibrium (by vertex of the
+    /// triangulation, m; empty: none) and, for quadratic tetrahedra, each
+    /// active cell's six edge nodes' rest and equilibrium positions (m, in
+    /// the order of gmsh_tet10_edges; empty: linear cells).
+    struct RestNodes
+    {
+      std::vector<dealii::Point<3>>                equilibria;
+      std::vector<std::array<dealii::Point<3>, 6>> edge_rest, edge_equilibria;
+    };
     void
     write_gmsh(const std::vector<dealii::Point<3>> &positions,
                const std::string                   &file,
-               const std::vector<double>           &rest_mass_ratios) const;
+               const std::vector<double>           &rest_mass_ratios,
+               const RestNodes                     &nodes = RestNodes()) const;
+    /// A rest_shape.msh's edge nodes and equilibria (rest_shape_nodes.h),
+    /// as read; empty for other meshes.
+    const RestShapeNodes &
+    rest_shape_nodes() const
+    {
+      return rest_nodes;
+    }
 
     /**
      * The target position (m) of every vertex of the mesh as read (and, on
@@ -199,6 +218,7 @@ namespace RestShape
     std::pair<double, dealii::Point<3>> gap;
     std::vector<double> mass_ratios; // by coarse cell of the triangulation
     std::vector<dealii::Point<3>> vertex_targets;
+    RestShapeNodes                rest_nodes; // rest_shape_nodes()
     LabelNames                    names;
   };
 

@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <restshape/base/label_names.h>
+#include <restshape/mesh/rest_shape_nodes.h>
 
 #include <vector>
 
@@ -26,6 +27,8 @@ namespace RestShape
     std::vector<dealii::CellData<3>> cells;
     std::vector<dealii::Point<3>>    targets;
     std::vector<double>              mass_ratios;
+    /// A rest_shape.msh's edge nodes and equilibria (by position).
+    RestShapeNodes rest_nodes;
     /// Names of labels (gmsh $PhysicalNames), may be empty.
     LabelNames names;
 
