@@ -82,6 +82,12 @@ add_test(NAME run/interrupted_runs
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_interrupts.sh $<TARGET_FILE:restshape> ${OUT}/interrupted_runs
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 
+# An MPI run interrupted (SIGTERM to mpirun, and to the ranks): every rank
+# ends, summary.json and one line say so, no temporary file.
+add_test(NAME mpi/interrupted_run
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_mpi_interrupt.sh $<TARGET_FILE:restshape> ${OUT}/mpi_interrupted_run
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+
 # Runs started side by side all initialise MPI.
 add_test(NAME run/concurrent_starts
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_concurrent_starts.sh $<TARGET_FILE:restshape> ${OUT}/concurrent_starts

@@ -162,6 +162,21 @@ if not QUICK:
         code, err = None, ""
     # Either it finished before (0) or it failed to write on every rank (5).
     judge(2, "output_removed_mpi", code, err, 5 if code not in (0,) else 0)
+    # SIGTERM to mpirun: every rank ends, summary.json says so; mpirun's own
+    # exit code is Open MPI's (1), the ranks' is 143.
+    d = out_dir("sigterm_mpi")
+    p = subprocess.Popen(MPIRUN + [RESTSHAPE, "--set", f"Output/Directory={d}/run",
+                                   "--set", "Discretization/Polynomial degree=2",
+                                   "prm/brain.prm"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    time.sleep(6)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=HANG)
+    time.sleep(2)
+    ranks = run(["pgrep", "-f", f"^{RESTSHAPE} --set Output/Directory={d}/run"])[1].strip()
+    judge(2, "sigterm_mpi", 0 if p.returncode in (1, 143) else p.returncode, "", 0,
+          lambda: f"ranks left running: {ranks}" if ranks else
+          summary_ok(f"{d}/run", failure="interrupted by SIGTERM (signal 15)")())
 
 # 3: FIFOs.
 d = out_dir("fifos")

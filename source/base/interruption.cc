@@ -80,6 +80,16 @@ namespace RestShape
               ::close(fd);
               ::rename(summary.tmp, summary.path);
             }
+          // One line on stderr, from the process that writes the summary
+          // (rank 0 under MPI).
+          static const char *lines[3] = {
+            "Interrupted by SIGINT (signal 2): temporary files removed, "
+            "summary.json says so.\n",
+            "Interrupted by SIGTERM (signal 15): temporary files removed, "
+            "summary.json says so.\n",
+            "Interrupted by SIGHUP (signal 1): temporary files removed, "
+            "summary.json says so.\n"};
+          write_all(2, lines[i], std::strlen(lines[i]));
         }
       ::_exit(128 + sig);
     }
