@@ -88,6 +88,12 @@ add_test(NAME mpi/interrupted_run
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_mpi_interrupt.sh $<TARGET_FILE:restshape> ${OUT}/mpi_interrupted_run
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 
+# A disk that fills during the run: exit 5, one line, partial files removed.
+add_test(NAME run/disk_full
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_disk_full.sh $<TARGET_FILE:restshape> ${OUT}/disk_full
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(run/disk_full PROPERTIES SKIP_RETURN_CODE 77)
+
 # Runs started side by side all initialise MPI.
 add_test(NAME run/concurrent_starts
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_concurrent_starts.sh $<TARGET_FILE:restshape> ${OUT}/concurrent_starts
