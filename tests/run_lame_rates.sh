@@ -27,7 +27,7 @@ rms() {
   local name=p$1_$2_$3_$4
   "$exe" --set "Output/Directory=$out/$name" --set "Mesh/File=$out/shell_$2.msh" \
     --set "Discretization/Polynomial degree=$1" --set "Discretization/Formulation=$3" \
-    --set "Materials/Poisson's ratio=$4" "$here/data/lame_shell.prm" >"$out/$name.log" 2>&1 ||
+    --set "Materials/Poisson's ratio=$4" --set "Solver/Check stability=false" "$here/data/lame_shell.prm" >"$out/$name.log" 2>&1 ||
     { echo "FAIL: $name: exit $?" >&2; tail -n 3 "$out/$name.log" >&2; exit 1; }
   local figure
   figure=$(/usr/bin/python3 "$here/check_lame_shell.py" "$out/$name/nodes.csv" --E 3000 \
