@@ -25,7 +25,7 @@ run() { # name degree nu formulation inverse
   "$exe" --set "Output/Directory=$out/$1" --set "Discretization/Polynomial degree=$2" \
     --set "Materials/Poisson's ratio=$3" --set "Discretization/Formulation=$4" \
     --set "Inverse problem/Enabled=$5" --set "Loads/Ventricular pressure=$pressure" \
-    "$prm" >"$out/$1.log" 2>&1 ||
+    --set "Solver/Check stability=false" "$prm" >"$out/$1.log" 2>&1 ||
     { echo "FAIL: $1: exit $?"; tail -n 3 "$out/$1.log"; exit 1; }
 }
 # rms NAME MODE NU LAW: the RMS error (%) of the run against the ODE.
