@@ -97,7 +97,8 @@ namespace RestShape
       Patterns::Anything(),
       "An opening of the skull: 'sphere: x, y, z, r', 'cylinder: x, y, "
       "z, ax, ay, az, r' (centre, axis direction and radius in the mesh's "
-      "length unit; the cylinder is unbounded along its axis) or 'surface: "
+      "length unit; the cylinder is unbounded along its axis), 'box: x0, "
+      "y0, z0, x1, y1, z1' (two opposite corners) or 'surface: "
       "FILE' (the inside of a closed, outward-oriented surface, .off, .stl "
       "or .obj, in the mesh's length unit, e.g. drawn over the skull in a "
       "segmentation tool). Surface "

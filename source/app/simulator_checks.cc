@@ -45,6 +45,7 @@ namespace RestShape
         "refinement/Cycles = 0 (use Mesh/Global refinements)");
 
     check_something_is_free();
+    check_fixed_planes();
     if (!parameters.scenarios.empty())
       try
         {
@@ -67,6 +68,29 @@ namespace RestShape
                      "every label of the mesh (" + to_string(mesh->labels()) +
                        ") is fixed in all three directions: nothing is free "
                        "to move; expected at least one label that is not");
+  }
+
+  void
+  Simulator::check_fixed_planes() const
+  {
+    for (const FixedPlane &plane :
+         parameters.forward.discretization.fixed_planes)
+      {
+        unsigned int faces = 0;
+        for (const auto &cell : mesh->triangulation().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              faces += cell->at_boundary(f) &&
+                       plane.holds(*cell->face(f), mesh->length_unit());
+        if (Utilities::MPI::sum(faces, comm) == 0)
+          throw InputError(prm_file,
+                           "Boundary conditions/Fixed boundary planes",
+                           "no boundary face of the mesh lies in the plane " +
+                             plane.text() +
+                             " (coordinates in the mesh's length unit); "
+                             "expected a plane that holds a face of the "
+                             "surface, e.g. a symmetry plane of the mesh");
+      }
   }
 
   void
@@ -112,8 +136,8 @@ namespace RestShape
           "Boundary conditions/Fixed labels",
           std::string("no node is fixed in ") + "xyz"[c] +
             " and there is no contact or elastic support: the problem is singular "
-            "(free rigid-body motion); expected fixed labels that "
-            "hold every component");
+            "(free rigid-body motion); expected fixed labels or fixed "
+            "boundary planes that hold every component");
   }
 
   void
@@ -173,7 +197,23 @@ namespace RestShape
     std::set<Label> held;
     for (const auto &fixed : parameters.forward.discretization.fixed_labels)
       held.insert(fixed.label);
-    return held;
+    const auto &planes = parameters.forward.discretization.fixed_planes;
+    if (planes.empty())
+      return held;
+    // A label with a boundary face in a fixed plane is held there.
+    for (const auto &cell : mesh->triangulation().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              const std::array<bool, 3> c =
+                fixed_plane_components(planes,
+                                       *cell->face(f),
+                                       mesh->length_unit());
+              if (c[0] || c[1] || c[2])
+                held.insert(cell->material_id());
+            }
+    return Utilities::MPI::compute_set_union(held, comm);
   }
 
   std::string

@@ -19,7 +19,8 @@ namespace RestShape
   {
     const std::string region_format =
       "expected 'sphere: x, y, z, r', 'cylinder: x, y, z, ax, ay, az, r' "
-      "(centre, axis direction and radius in the mesh's length unit) or "
+      "(centre, axis direction and radius in the mesh's length unit), "
+      "'box: x0, y0, z0, x1, y1, z1' (two opposite corners) or "
       "'surface: FILE' (a closed surface, .off, .stl or .obj, in the mesh's "
       "length unit)";
   } // namespace
@@ -34,6 +35,11 @@ namespace RestShape
           return r.norm() <= radius;
         case Shape::cylinder:
           return (r - (r * axis) * axis).norm() <= radius;
+        case Shape::box:
+          for (unsigned int d = 0; d < 3; ++d)
+            if (x[d] < center[d] || x[d] > upper[d])
+              return false;
+          return true;
         case Shape::surface:
           AssertThrow(inside,
                       ExcMessage("the surface " + file + " was not read"));
@@ -48,6 +54,7 @@ namespace RestShape
   Region::scale(const double factor)
   {
     center *= factor;
+    upper *= factor;
     radius *= factor;
     unit *= factor;
   }
@@ -60,14 +67,42 @@ namespace RestShape
     if (shape == Shape::surface)
       return "inside of the surface " + file;
     std::ostringstream out;
-    out << std::setprecision(4)
-        << (shape == Shape::sphere ? "sphere at " : "cylinder through ")
+    out << std::setprecision(4);
+    if (shape == Shape::box)
+      {
+        out << "box from " << vector_text(center, unit) << " to "
+            << vector_text(upper, unit) << ' ' << unit_name;
+        return out.str();
+      }
+    out << (shape == Shape::sphere ? "sphere at " : "cylinder through ")
         << vector_text(center, unit);
     if (shape == Shape::cylinder)
       out << " along " << vector_text(axis);
     out << " of radius " << radius / unit << ' ' << unit_name;
     return out.str();
   }
+
+  namespace
+  {
+    /// A box from two opposite corners, in any order.
+    Region
+    parse_box(const std::vector<double> &v, const std::string &parameter)
+    {
+      Region region;
+      region.shape = Region::Shape::box;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          region.center[d] = std::min(v[d], v[d + 3]);
+          region.upper[d]  = std::max(v[d], v[d + 3]);
+          if (!(region.upper[d] > region.center[d]))
+            throw InputError("",
+                             parameter,
+                             std::string("the box has no extent in ") +
+                               "xyz"[d] + "; " + region_format);
+        }
+      return region;
+    }
+  } // namespace
 
   Region
   parse_region(const std::string &text, const std::string &parameter)
@@ -112,6 +147,8 @@ namespace RestShape
                              region_format);
         region.axis /= region.axis.norm();
       }
+    else if (shape == "box" && v.size() == 6)
+      return parse_box(v, parameter);
     else
       throw InputError("", parameter, "'" + trimmed + "': " + region_format);
     if (!(region.radius > 0))

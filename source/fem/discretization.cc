@@ -171,8 +171,37 @@ namespace RestShape
                       constraints_base.add_line(dofs[i]);
                   }
             }
+        add_plane_constraints(cell);
       }
     constraints_base.close();
+  }
+
+  void
+  Discretization::add_plane_constraints(
+    const DoFHandler<3>::active_cell_iterator &cell)
+  {
+    if (settings.fixed_planes.empty())
+      return;
+    std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_face());
+    for (const unsigned int f : cell->face_indices())
+      {
+        if (!cell->at_boundary(f))
+          continue;
+        const std::array<bool, 3> held =
+          fixed_plane_components(settings.fixed_planes,
+                                 *cell->face(f),
+                                 labelled_mesh.length_unit());
+        if (!held[0] && !held[1] && !held[2])
+          continue;
+        cell->face(f)->get_dof_indices(dofs, cell->active_fe_index());
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (held[fe_.face_system_to_component_index(i, f).first])
+            {
+              fixed_dof[relevant_dofs.index_within_set(dofs[i])] = true;
+              if (!constraints_base.is_constrained(dofs[i]))
+                constraints_base.add_line(dofs[i]);
+            }
+      }
   }
 
   VectorType

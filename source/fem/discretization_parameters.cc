@@ -72,6 +72,16 @@ namespace RestShape
                       "cells with that label, 'label:xy' only the listed "
                       "components; a label may be a range. Example: "
                       "'3, 5:xy, 7-9'.");
+    prm.declare_entry(
+      "Fixed boundary planes",
+      "",
+      Patterns::Anything(),
+      "Displacement components held on the boundary faces that lie in a "
+      "coordinate plane: 'AXIS = VALUE' (VALUE in the mesh's length unit) "
+      "holds the plane's normal component there (a symmetry plane of a half "
+      "or eighth model: the nodes slide in the plane), 'AXIS = VALUE: "
+      "COMPONENTS' the listed ones (a face held in place: 'y = 1: xyz'). "
+      "Example: 'x = 0, z = 0, y = 1: xz'. Empty: none.");
     prm.leave_subsection();
   }
 
@@ -100,6 +110,9 @@ namespace RestShape
     prm.enter_subsection("Boundary conditions");
     fixed_labels = parse_fixed_labels(prm.get("Fixed labels"),
                                       "Boundary conditions/Fixed labels");
+    fixed_planes =
+      parse_fixed_planes(prm.get("Fixed boundary planes"),
+                         "Boundary conditions/Fixed boundary planes");
     prm.leave_subsection();
   }
 

@@ -94,8 +94,9 @@ namespace RestShape
     }
 
     /// Per component, the area (m^2) of the faces between cells fixed in
-    /// it and cells that are not, seen from the free cells; and whether
-    /// any cell is fixed in it.
+    /// it and cells that are not, seen from the free cells, and of the
+    /// boundary faces in a plane fixed in it; and whether any cell or
+    /// plane face is fixed in it.
     std::pair<std::array<double, 3>, std::array<bool, 3>>
     support_faces(const ForwardProblem &forward)
     {
@@ -107,6 +108,9 @@ namespace RestShape
         const auto it = fixed.find(label);
         return it != fixed.end() && it->second[c];
       };
+      const std::vector<FixedPlane> &planes =
+        forward.scene_parameters().discretization.fixed_planes;
+      const double length_unit = forward.discretization().mesh().length_unit();
       std::array<double, 3> area{{0, 0, 0}};
       std::array<bool, 3>   any{{false, false, false}};
       for (const auto &cell :
@@ -123,6 +127,14 @@ namespace RestShape
                 if (!cell->at_boundary(f) &&
                     is_fixed(cell->neighbor(f)->material_id(), c))
                   area[c] += cell->face(f)->measure();
+                else if (cell->at_boundary(f) &&
+                         fixed_plane_components(planes,
+                                                *cell->face(f),
+                                                length_unit)[c])
+                  {
+                    area[c] += cell->face(f)->measure();
+                    any[c] = true;
+                  }
             }
       const MPI_Comm comm = forward.discretization()
                               .dof_handler()

@@ -35,8 +35,10 @@ namespace RestShape
                         "",
                         Patterns::Anything(),
                         "Where the loaded faces' centres lie, in the mesh's "
-                        "length unit: 'sphere: x, y, z, r' or 'cylinder: x, y, "
-                        "z, ax, ay, az, r'; empty: every face of Labels.");
+                        "length unit: 'sphere: x, y, z, r', 'cylinder: x, y, "
+                        "z, ax, ay, az, r' or 'box: x0, y0, z0, x1, y1, z1' "
+                        "(two opposite corners); empty: every face of "
+                        "Labels.");
       prm.leave_subsection();
     }
 
@@ -53,8 +55,8 @@ namespace RestShape
         throw InputError("",
                          section + "/Region",
                          "a surface file cannot bound the loaded patch; "
-                         "expected 'sphere: x, y, z, r' or 'cylinder: x, y, z, "
-                         "ax, ay, az, r'");
+                         "expected 'sphere: x, y, z, r', 'cylinder: x, y, z, "
+                         "ax, ay, az, r' or 'box: x0, y0, z0, x1, y1, z1'");
       if (s.traction.norm() == 0)
         return {};
       return [s](const LoadContext &context) {

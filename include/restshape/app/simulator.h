@@ -63,11 +63,15 @@ namespace RestShape
     /// InputError when every label is fixed in all directions.
     void
     check_something_is_free() const;
+    /// InputError when a fixed boundary plane holds no boundary face.
+    void
+    check_fixed_planes() const;
     /// Those that need the forward problem: stability with a
     /// non-symmetric tangent, unheld pieces, unfixed components.
     void
     check_scene_on_problem() const;
-    /// The labels Boundary conditions/Fixed labels holds (any component).
+    /// The labels Boundary conditions/Fixed labels holds (any component),
+    /// and those with a boundary face in a fixed boundary plane.
     std::set<Label>
     held_labels() const;
     /// The pieces of the mesh that only a vertex or an edge joins to the

@@ -1,5 +1,5 @@
-// A region of space given in a scene file: a ball, an unbounded cylinder or
-// the inside of a closed surface file.
+// A region of space given in a scene file: a ball, an unbounded cylinder,
+// a box or the inside of a closed surface file.
 #ifndef restshape_base_region_h
 #define restshape_base_region_h
 
@@ -14,7 +14,8 @@ namespace RestShape
 {
   /**
    * A ball (centre, radius), an unbounded circular cylinder (a point of
-   * its axis, the axis direction, radius) or the inside of a closed
+   * its axis, the axis direction, radius), a box aligned with the axes
+   * (two opposite corners) or the inside of a closed
    * surface file, in the unit it was given in until scale() converts it
    * (to metres). A surface's inside test is set by whoever reads the file
    * (ScenarioParameters::read_surfaces(): the contact part does).
@@ -26,13 +27,15 @@ namespace RestShape
       none,
       sphere,
       cylinder,
+      box,
       surface
     };
     using InsideTest = std::function<bool(const dealii::Point<3> &)>;
 
     Shape                             shape = Shape::none;
-    dealii::Point<3>                  center;
-    dealii::Tensor<1, 3>              axis; // unit vector (cylinder)
+    dealii::Point<3>                  center; // box: its lower corner
+    dealii::Point<3>                  upper;  // box: its upper corner
+    dealii::Tensor<1, 3>              axis;   // unit vector (cylinder)
     double                            radius = 0;
     std::string                       file;     // surface
     double                            unit = 1; // surface: metres per file unit
@@ -56,7 +59,8 @@ namespace RestShape
   };
 
   /**
-   * 'sphere: x, y, z, r', 'cylinder: x, y, z, ax, ay, az, r' (lengths in
+   * 'sphere: x, y, z, r', 'cylinder: x, y, z, ax, ay, az, r', 'box: x0, y0,
+   * z0, x1, y1, z1' (lengths in
    * the unit of the text) or 'surface: FILE'; an empty text gives no
    * region. Throws InputError
    * naming @p parameter with the expected format.

@@ -157,6 +157,11 @@ namespace RestShape
     setup_nodes();
     void
     setup_constraints();
+    /// Fixed boundary planes: hold the listed components of the DoFs of
+    /// @p cell's boundary faces that lie in a plane.
+    void
+    add_plane_constraints(
+      const dealii::DoFHandler<3>::active_cell_iterator &cell);
   };
 } // namespace RestShape
 

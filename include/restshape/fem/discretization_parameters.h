@@ -1,5 +1,5 @@
 // Subsection "Discretization": the element degree and the tangent; and the
-// fixed labels of subsection "Boundary conditions".
+// fixed labels and planes of subsection "Boundary conditions".
 #ifndef restshape_fem_discretization_parameters_h
 #define restshape_fem_discretization_parameters_h
 
@@ -7,6 +7,7 @@
 
 #include <restshape/base/label_values.h>
 #include <restshape/base/tangent_type.h>
+#include <restshape/fem/fixed_planes.h>
 
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ namespace RestShape
     std::string  tangent_name; // as in the .prm, for summary.json
     /// Boundary conditions/Fixed labels.
     std::vector<FixedLabel> fixed_labels;
+    /// Boundary conditions/Fixed boundary planes.
+    std::vector<FixedPlane> fixed_planes;
     /// Discretization/Formulation as written (auto|displacement|mixed).
     std::string formulation_name = "auto";
     /// After resolve_formulation(): whether the volume change is the
