@@ -202,13 +202,25 @@ judge(4, "named_scenario_files_of_an_earlier_run", code, err, 0,
       lambda: "" if not os.path.exists(os.path.join(d, "scenario_prone.csv")) else
       "scenario_prone.csv survived")
 d = out_dir("two_runs_one_directory")
-first = subprocess.Popen([RESTSHAPE, "--set", f"Output/Directory={d}", "prm/brain.prm"],
-                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+# The first run lasts about 10 s (the brain refined once), so that the second
+# one, 0.3 s on an idle machine, starts and ends while the first holds the
+# directory even on a loaded one; the first is then stopped with SIGTERM.
+first = subprocess.Popen([RESTSHAPE, "--set", f"Output/Directory={d}",
+                          "--set", "Mesh/Global refinements=1", "prm/brain.prm"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 wait_for_lock(d, first)
+first_running = first.poll() is None
 code, _, err = run([RESTSHAPE, "--set", f"Output/Directory={d}", "prm/column.prm"])
-first_code = first.wait()
-judge(4, "two_runs_one_directory", code, err, 1 if first_code == 0 else code,
-      lambda: "" if "another run" in err or first_code != 0 else "no word of the other run")
+first_still_running = first.poll() is None
+first.terminate()
+first_err = first.communicate()[1]
+first_code = first.returncode
+judge(4, "two_runs_one_directory", code, err, 1,
+      lambda: "the first run ended before the second started" if not first_running else
+      "the first run ended before the second did" if not first_still_running else
+      "" if "another run" in err else "no word of the other run")
+judge(4, "two_runs_one_directory_first_stopped", first_code, first_err,
+      143 if first_still_running else 0)
 
 # 5: label names.
 d = out_dir("json_names")
