@@ -1,0 +1,107 @@
+#!/bin/bash
+# Algebraic multigrid on nearly incompressible tissue (the question of
+# Barnafi et al. 2024, who found plain multigrid weak for the inverse
+# problem): CG preconditioned by Trilinos ML on the mixed formulation's
+# condensed system, as the bulk modulus grows, one thread each:
+#   block   step-44's indented block (prm/indented_block.prm) of 16^3 Q1-P0
+#           hexahedra, shear modulus fixed, forward solve;
+#   brain   prm/brain_in_vivo.prm (Ogden, P1 with the averaged nodal
+#           pressure, skull contact; no scenario, no stability check): the
+#           forward solve and the inverse (the direct inverse, whose Krylov
+#           solves the same preconditioner serves), bulk modulus set for
+#           the cerebrum's nu.
+# Each row: Newton steps (of the forward solve; of the direct inverse and
+# its Jacobian products), CG iterations per forward Newton step (summary.json),
+# whether CG + AMG failed and the direct solver took over (the screen),
+# and wall seconds. Linear solver = direct is run beside each for the time.
+#
+# usage: benchmarks/amg_incompressible/run.sh [--coarse]
+#   --coarse: the brain's forward solve at nu = 0.45 and 0.4977 only (the
+#   version in the tests); fails if CG + AMG fails there or needs more than
+#   MAX_ITERATIONS (60) per Newton step at 0.4977.
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
+# amg_incompressible).
+set -u
+exe=${RESTSHAPE:-build/restshape}
+out=${OUT:-output/benchmarks/amg_incompressible}
+max_iterations=${MAX_ITERATIONS:-60}
+coarse=false
+[ "${1:-}" = --coarse ] && coarse=true
+here=$(dirname "$0")
+source "$here/../common.sh"
+mkdir -p "$out"
+machine_text=$(machine)
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
+mu_block=80194000 # Pa (bc reads no exponent)
+mu_brain=670
+
+key() { # file key
+  grep -o "\"$2\": [-0-9.e+a-z]*" "$1" | head -n 1 | sed 's/.*: //'
+}
+# run NAME SOLVER PRM ARGS...: one line of the table.
+run() {
+  local name=$1 solver=$2 prm=$3
+  shift 3
+  local dir=$out/$name-$solver start end
+  start=$(date +%s.%N)
+  "$exe" --set "Output/Directory=$dir" --set "Solver/Linear solver=$solver" \
+    --set "Solver/Check stability=false" --set "Output/Write VTU=false" "$@" "$prm" \
+    >"$dir.log" 2>&1
+  local code=$?
+  end=$(date +%s.%N)
+  local fallback=no
+  grep -q "the direct solver takes over" "$dir.log" && fallback=yes
+  printf '| %s | %s | %s | %s | %s | %s | %s | %.1f |\n' "$name" "$solver" "$code" \
+    "$(key "$dir/summary.json" newton_iterations)" \
+    "$(key "$dir/summary.json" direct_inverse_newton_steps) / $(key "$dir/summary.json" direct_inverse_jacobian_products)" \
+    "$(key "$dir/summary.json" linear_iterations_per_newton_step)" "$fallback" \
+    "$(echo "$end - $start" | bc)" | tee -a "$out/table.md"
+}
+brain_args() { # nu inverse: the bulk modulus for the cerebrum's nu
+  local K
+  K=$(echo "2 * $mu_brain * (1 + $1) / (3 * (1 - 2 * $1))" | bc -l)
+  echo "--set|Materials/Bulk modulus=$K|--set|Inverse problem/Enabled=$2"
+}
+scenario_off=(--set "Scenario prone/Enabled=false" --set "Scenario drained/Enabled=false"
+  --set "Scenario craniotomy/Enabled=false" --set "Scenario/Enabled=false")
+
+: >"$out/table.md"
+echo "machine: $machine_text; one thread each" | tee -a "$out/table.md"
+echo "| case | linear solver | exit | Newton steps | direct inverse: Newton steps / Jacobian products | CG iterations per Newton step | CG + AMG failed | wall s |" | tee -a "$out/table.md"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- |" | tee -a "$out/table.md"
+status=0
+if $coarse; then
+  for nu in 0.45 0.4977; do
+    IFS='|' read -r -a args < <(brain_args "$nu" false)
+    run "brain_forward_nu$nu" cg-amg prm/brain_in_vivo.prm "${scenario_off[@]}" "${args[@]}"
+    dir=$out/brain_forward_nu$nu-cg-amg
+    if grep -q "the direct solver takes over" "$dir.log"; then
+      echo "FAIL: CG + AMG failed at nu = $nu"
+      status=1
+    fi
+    its=$(key "$dir/summary.json" linear_iterations_per_newton_step)
+    if [ "$nu" = 0.4977 ] && ! awk -v a="${its:-1e9}" -v b="$max_iterations" 'BEGIN { exit !(a <= b) }'; then
+      echo "FAIL: $its CG iterations per Newton step at nu = 0.4977 (at most $max_iterations)"
+      status=1
+    fi
+  done
+  exit $status
+fi
+/usr/bin/python3 meshes/make_block.py "$out/block_16.msh" 16 1
+for nu in 0.45 0.49 0.4977 0.4999; do
+  E=$(echo "2 * $mu_block * (1 + $nu)" | bc -l)
+  for solver in cg-amg direct; do
+    run "block_nu$nu" $solver prm/indented_block.prm --set "Mesh/File=$out/block_16.msh" \
+      --set "Materials/Young's modulus=$E" --set "Materials/Poisson's ratio=$nu"
+  done
+done
+for nu in 0.45 0.4977 0.4999; do
+  for inverse in false true; do
+    IFS='|' read -r -a args < <(brain_args "$nu" $inverse)
+    name=brain_forward_nu$nu
+    $inverse && name=brain_inverse_nu$nu
+    for solver in cg-amg direct; do
+      run "$name" $solver prm/brain_in_vivo.prm "${scenario_off[@]}" "${args[@]}"
+    done
+  done
+done
