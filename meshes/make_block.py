@@ -4,39 +4,97 @@
 2000) when L = 1 mm. Corner nodes on the planes x, y, z = 0 and = L lie on
 them exactly, for Boundary conditions/Fixed boundary planes.
 
-usage: make_block.py OUT.msh [N [L]]   (defaults 8 1, mm)"""
+--distort A moves every node by up to A times the cell size in each
+coordinate that does not lie on the cube's boundary (interior nodes in
+every direction, face nodes within their face, edge nodes along their
+edge; the corners stay), from a fixed seed: the distorted patch of a patch
+test, whose faces stay planar. A < 0.5 keeps every cell valid.
+--tetrahedra splits every hexahedron into 6 tetrahedra along its diagonal
+from the smallest to the largest corner (Kuhn's split, conforming).
+
+usage: make_block.py OUT.msh [N [L]] [--distort A] [--tetrahedra]
+       (defaults 8 1, mm)"""
+import itertools
+import random
 import sys
 
+SEED = 20000  # the distortion's seed: the same file every time
 
-def main():
-    out = sys.argv[1]
-    n = int(sys.argv[2]) if len(sys.argv) > 2 else 8
-    length = float(sys.argv[3]) if len(sys.argv) > 3 else 1.0
-    if n < 1 or not length > 0:
-        sys.exit("make_block.py: expected N >= 1 and L > 0")
 
-    def node(i, j, k):
-        return 1 + i + (n + 1) * (j + (n + 1) * k)
+def arguments():
+    args = sys.argv[1:]
+    distort, tetrahedra = 0.0, False
+    if "--tetrahedra" in args:
+        args.remove("--tetrahedra")
+        tetrahedra = True
+    if "--distort" in args:
+        i = args.index("--distort")
+        distort = float(args[i + 1])
+        del args[i:i + 2]
+    if not args:
+        sys.exit(__doc__)
+    n = int(args[1]) if len(args) > 1 else 8
+    length = float(args[2]) if len(args) > 2 else 1.0
+    if n < 1 or not length > 0 or not 0 <= distort < 0.5:
+        sys.exit("make_block.py: expected N >= 1, L > 0 and 0 <= A < 0.5")
+    return args[0], n, length, distort, tetrahedra
 
-    lines = ["$MeshFormat", "2.2 0 8", "$EndMeshFormat", "$Nodes",
-             str((n + 1) ** 3)]
+
+def coordinates(n, length, distort):
+    rng = random.Random(SEED)
+    h = length / n
+    points = {}
     for k in range(n + 1):
         for j in range(n + 1):
             for i in range(n + 1):
-                lines.append(f"{node(i, j, k)} {length * i / n!r} "
-                             f"{length * j / n!r} {length * k / n!r}")
-    lines += ["$EndNodes", "$Elements", str(n ** 3)]
-    element = 0
+                p = []
+                for index in (i, j, k):
+                    shift = rng.uniform(-distort, distort) * h
+                    p.append(length * index / n + (shift if 0 < index < n else 0.0))
+                points[(i, j, k)] = p
+    return points
+
+
+def volume(a, b, c, d):
+    u = [b[m] - a[m] for m in range(3)]
+    v = [c[m] - a[m] for m in range(3)]
+    w = [d[m] - a[m] for m in range(3)]
+    return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+            + u[2] * (v[0] * w[1] - v[1] * w[0]))
+
+
+def cells(n, points, tetrahedra):
+    """(gmsh type, node keys) of every cell."""
     for k in range(n):
         for j in range(n):
             for i in range(n):
-                element += 1
-                corners = [node(i, j, k), node(i + 1, j, k),
-                           node(i + 1, j + 1, k), node(i, j + 1, k),
-                           node(i, j, k + 1), node(i + 1, j, k + 1),
-                           node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)]
-                lines.append(f"{element} 5 2 1 1 " +
-                             " ".join(map(str, corners)))
+                if not tetrahedra:
+                    yield 5, [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
+                              (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1),
+                              (i, j + 1, k + 1)]
+                    continue
+                for order in itertools.permutations(range(3)):
+                    corner = [i, j, k]
+                    path = [tuple(corner)]
+                    for axis in order:
+                        corner[axis] += 1
+                        path.append(tuple(corner))
+                    if volume(*[points[p] for p in path]) < 0:
+                        path[2], path[3] = path[3], path[2]
+                    yield 4, path
+
+
+def main():
+    out, n, length, distort, tetrahedra = arguments()
+    points = coordinates(n, length, distort)
+    number = {key: m + 1 for m, key in enumerate(sorted(points, key=lambda t: t[::-1]))}
+    lines = ["$MeshFormat", "2.2 0 8", "$EndMeshFormat", "$Nodes", str(len(points))]
+    for key in sorted(points, key=lambda t: t[::-1]):
+        lines.append(f"{number[key]} " + " ".join(repr(x) for x in points[key]))
+    elements = list(cells(n, points, tetrahedra))
+    lines += ["$EndNodes", "$Elements", str(len(elements))]
+    for e, (kind, keys) in enumerate(elements, 1):
+        lines.append(f"{e} {kind} 2 1 1 " + " ".join(str(number[key]) for key in keys))
     lines += ["$EndElements"]
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
