@@ -449,6 +449,14 @@ namespace RestShape
         amg_iterations_per_decade = iterations_per_decade(control, b);
         return control.last_step();
       }
+    if (direct_fallback_allowed && A.m() <= direct_fallback_dofs)
+      throw SolverFailure(std::string("the iterative solver did not "
+                                      "converge: ") +
+                          (symmetric ? "CG" : "GMRES") + " stopped after " +
+                          std::to_string(control.last_step()) +
+                          " iterations with residual " +
+                          std::to_string(control.last_value()) + " (target " +
+                          std::to_string(target) + ")");
     // The consistent co-rotational tangent can be indefinite at large
     // strains: GMRES does not need definiteness.
     SolverControl gmres_control(max_gmres_iterations, target);

@@ -105,7 +105,9 @@ namespace RestShape
     static constexpr double prepared_solve_tolerance = 1e-3;
 
     /// Linear solver = auto took CG + AMG: where CG and GMRES fail on a
-    /// system, solve it and every later one with the direct solver.
+    /// system, solve it and every later one with the direct solver; on
+    /// systems of at most direct_fallback_dofs unknowns, where CG fails
+    /// (GMRES is not tried).
     void
     allow_direct_fallback();
 
@@ -147,6 +149,15 @@ namespace RestShape
     /// breaks down (indefinite tangent).
     static constexpr unsigned int max_cg_iterations    = 2000;
     static constexpr unsigned int max_gmres_iterations = 5000;
+    /// With the direct fallback allowed, systems of at most this many
+    /// unknowns go to the direct solver as soon as CG fails, without
+    /// GMRES's 5000 iterations first: MUMPS solves them in seconds (the
+    /// column's 132k P1 DoFs in 12 s a solve), while GMRES after a failed
+    /// CG seldom converges (step-44's block at nu = 0.4999, 14,739 DoFs:
+    /// CG 2000 and GMRES 5000 iterations failed, 56 s in all against the
+    /// direct solver's 23 s). Larger systems try GMRES first, as the
+    /// direct solver's memory may not be at hand.
+    static constexpr unsigned int direct_fallback_dofs = 150000;
     /// A lagged AMG is rebuilt at once when CG would need more than this
     /// many times its iterations per decade when it was built.
     static constexpr double       lagged_slowdown_cap   = 3;
