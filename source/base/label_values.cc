@@ -190,6 +190,32 @@ namespace RestShape
     return values;
   }
 
+  std::array<bool, 3>
+  parse_components(const std::string &item,
+                   const std::string &components,
+                   const std::string &parameter,
+                   const std::string &example)
+  {
+    std::array<bool, 3> result{{false, false, false}};
+    if (components.empty())
+      throw InputError("",
+                       parameter,
+                       "'" + item +
+                         "' has no components after ':'; expected a subset "
+                         "of xyz, e.g. '" +
+                         example + "'");
+    for (const char c : components)
+      {
+        if (c < 'x' || c > 'z')
+          throw InputError("",
+                           parameter,
+                           "'" + item + "': unknown component '" +
+                             std::string(1, c) + "'; expected a subset of xyz");
+        result[c - 'x'] = true;
+      }
+    return result;
+  }
+
   std::vector<FixedLabel>
   parse_fixed_labels(const std::string &text, const std::string &parameter)
   {
@@ -202,27 +228,11 @@ namespace RestShape
         if (colon == std::string::npos)
           fixed.components = {{true, true, true}};
         else
-          {
-            fixed.components = {{false, false, false}};
-            const std::string comps =
-              dealii::Utilities::trim(item.substr(colon + 1));
-            if (comps.empty())
-              throw InputError("",
-                               parameter,
-                               "'" + item +
-                                 "' has no components after ':'; expected "
-                                 "a subset of xyz, e.g. '5:xy'");
-            for (const char c : comps)
-              {
-                if (c < 'x' || c > 'z')
-                  throw InputError("",
-                                   parameter,
-                                   "'" + item + "': unknown component '" +
-                                     std::string(1, c) +
-                                     "'; expected a subset of xyz");
-                fixed.components[c - 'x'] = true;
-              }
-          }
+          fixed.components =
+            parse_components(item,
+                             dealii::Utilities::trim(item.substr(colon + 1)),
+                             parameter,
+                             "5:xy");
         for (long l = first; l <= long(last); ++l)
           {
             fixed.label = Label(l);

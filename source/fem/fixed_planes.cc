@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <restshape/base/input_error.h>
+#include <restshape/base/label_values.h>
 #include <restshape/fem/fixed_planes.h>
 
 #include <cmath>
@@ -14,31 +15,6 @@ namespace RestShape
     /// A face lies in a plane when its vertices are within this fraction
     /// of its size of it (round-off of a mesh file's coordinates).
     constexpr double plane_tolerance = 1e-6;
-
-    std::array<bool, 3>
-    parse_components(const std::string &item,
-                     const std::string &comps,
-                     const std::string &parameter)
-    {
-      std::array<bool, 3> result{{false, false, false}};
-      if (comps.empty())
-        throw InputError("",
-                         parameter,
-                         "'" + item +
-                           "' has no components after ':'; expected a "
-                           "subset of xyz, e.g. 'y = 1: xz'");
-      for (const char c : comps)
-        {
-          if (c < 'x' || c > 'z')
-            throw InputError("",
-                             parameter,
-                             "'" + item + "': unknown component '" +
-                               std::string(1, c) +
-                               "'; expected a subset of xyz");
-          result[c - 'x'] = true;
-        }
-      return result;
-    }
 
     FixedPlane
     parse_plane(const std::string &item, const std::string &parameter)
@@ -73,7 +49,8 @@ namespace RestShape
         result.components =
           parse_components(item,
                            Utilities::trim(item.substr(colon + 1)),
-                           parameter);
+                           parameter,
+                           "y = 1: xz");
       return result;
     }
   } // namespace

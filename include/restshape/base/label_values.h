@@ -62,6 +62,15 @@ namespace RestShape
     std::array<bool, 3> components;
   };
 
+  /// The displacement components named after the ':' of @p item of
+  /// @p parameter ("xz" -> x and z); @p example shows a whole item in the
+  /// error for an empty list.
+  std::array<bool, 3>
+  parse_components(const std::string &item,
+                   const std::string &components,
+                   const std::string &parameter,
+                   const std::string &example);
+
   /// Parse "3, 5:xy, 7-9" (empty allowed).
   std::vector<FixedLabel>
   parse_fixed_labels(const std::string &text, const std::string &parameter);
