@@ -1,4 +1,5 @@
 #include <Epetra_CrsMatrix.h>
+#include <restshape/fem/compressed_row.h>
 #include <restshape/fem/element_limits.h>
 #include <restshape/fem/tangent_scatter.h>
 
@@ -101,21 +102,10 @@ namespace RestShape
             std::copy(known, known + n, place);
             continue;
           }
-        // The sorted columns in the sorted row: the next one is often the
-        // next entry (a node's components), else a binary search on.
-        const int *k = indices, *const end = indices + length;
-        for (unsigned int c = 0; c < n; ++c)
-          {
-            const auto &[col, j] = columns[c];
-            if (k == end || *k != col)
-              k = std::lower_bound(k, end, col);
-            // Not found: not in the sparsity (deal.II's path says so), or
-            // the row's columns are not sorted (deal.II's path adds it).
-            if (k == end || *k != col)
-              return false;
-            place[j] = k - indices;
-            ++k;
-          }
+        // Not found: not in the sparsity (deal.II's path says so), or the
+        // row's columns are not sorted (deal.II's path adds it).
+        if (!find_in_row(columns.data(), n, indices, indices + length, place))
+          return false;
       }
     return true;
   }

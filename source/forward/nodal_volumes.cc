@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <restshape/fem/compressed_row.h>
 #include <restshape/forward/nodal_volumes.h>
 
 #include <algorithm>
@@ -354,11 +355,11 @@ namespace RestShape
     // the matrix (AffineConstraints' general path, which sorts the
     // patch's DoFs and looks each one up in its constraints, took 70 % of
     // add_stiffness on the brain). Where the matrix's compressed rows are
-    // at hand (sorted, this process's rows), each row's entries are found
-    // by one walk along the row with the patch's columns sorted, not by
-    // Epetra's map lookup and search per entry (0.73e9 of the 1.08e9
-    // instructions of add_stiffness on the in vivo brain); the values
-    // added, and their order, are the same.
+    // at hand (this process's rows), each row's entries are found by one
+    // walk along the row with the patch's columns sorted (find_in_row),
+    // not by Epetra's map lookup and search per entry (0.73e9 of the
+    // 1.08e9 instructions of add_stiffness on the in vivo brain); the
+    // values added are the same.
     const unsigned int n      = patch.size();
     Epetra_CrsMatrix  &matrix = const_cast<Epetra_CrsMatrix &>(
       static_cast<const TrilinosWrappers::SparseMatrix &>(tangent)
@@ -375,49 +376,24 @@ namespace RestShape
       }
     if (direct)
       std::sort(columns.begin(), columns.end());
+    std::vector<int>    place(n);
     std::vector<double> row(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const int local_row =
-          direct ? matrix.LRID(static_cast<int>(patch[i])) : -1;
-        if (local_row >= 0 &&
-            add_to_row(
-              factor * g[i], g, columns, indices, values, offsets, local_row))
-          continue;
+        const int r = direct ? matrix.LRID(static_cast<int>(patch[i])) : -1;
+        if (r >= 0 && find_in_row(columns.data(),
+                                  n,
+                                  indices + offsets[r],
+                                  indices + offsets[r + 1],
+                                  place.data()))
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              values[offsets[r] + place[j]] += factor * g[i] * g[j];
+            continue;
+          }
         for (unsigned int j = 0; j < n; ++j)
           row[j] = factor * g[i] * g[j];
         tangent.add(patch[i], n, patch.data(), row.data(), false, false);
       }
-  }
-
-  bool
-  NodalVolumes::add_to_row(
-    const double                                     factor,
-    const std::vector<double>                       &g,
-    const std::vector<std::pair<int, unsigned int>> &columns,
-    const int                                       *indices,
-    double                                          *values,
-    const int                                       *offsets,
-    const int                                        local_row)
-  {
-    // The positions first, so that a column missing from the sparsity
-    // adds nothing here (deal.II's path then says so).
-    thread_local std::vector<int> place;
-    place.resize(columns.size());
-    const int *const begin = indices + offsets[local_row];
-    const int *const end   = indices + offsets[local_row + 1];
-    const int       *k     = begin;
-    for (unsigned int c = 0; c < columns.size(); ++c)
-      {
-        if (k == end || *k != columns[c].first)
-          k = std::lower_bound(k, end, columns[c].first);
-        if (k == end || *k != columns[c].first)
-          return false;
-        place[c] = offsets[local_row] + int(k - begin);
-        ++k;
-      }
-    for (unsigned int c = 0; c < columns.size(); ++c)
-      values[place[c]] += factor * g[columns[c].second];
-    return true;
   }
 } // namespace RestShape

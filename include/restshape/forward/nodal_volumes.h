@@ -122,17 +122,6 @@ namespace RestShape
              const std::vector<dealii::types::global_dof_index> &patch,
              const std::vector<double>                          &g,
              dealii::TrilinosWrappers::SparseMatrix             &tangent);
-    /// values of the compressed row @p local_row += factor g[j] at the
-    /// sorted local @p columns (local column, j); false, adding nothing,
-    /// where a column is not in the row.
-    static bool
-    add_to_row(const double                                     factor,
-               const std::vector<double>                       &g,
-               const std::vector<std::pair<int, unsigned int>> &columns,
-               const int                                       *indices,
-               double                                          *values,
-               const int                                       *offsets,
-               const int                                        local_row);
 
     struct Cell
     {
