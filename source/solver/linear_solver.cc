@@ -449,14 +449,18 @@ namespace RestShape
         amg_iterations_per_decade = iterations_per_decade(control, b);
         return control.last_step();
       }
+    // What a failure says: the iterations, the residual and the target.
+    const auto failure = [&](const std::string &iterations,
+                             const double       residual) {
+      return "the iterative solver did not converge: " + iterations +
+             " iterations with residual " + std::to_string(residual) +
+             " (target " + std::to_string(target) + ")";
+    };
+    const std::string first_iterations = std::to_string(control.last_step());
     if (direct_fallback_allowed && A.m() <= direct_fallback_dofs)
-      throw SolverFailure(std::string("the iterative solver did not "
-                                      "converge: ") +
-                          (symmetric ? "CG" : "GMRES") + " stopped after " +
-                          std::to_string(control.last_step()) +
-                          " iterations with residual " +
-                          std::to_string(control.last_value()) + " (target " +
-                          std::to_string(target) + ")");
+      throw SolverFailure(failure(std::string(symmetric ? "CG" : "GMRES") +
+                                    " stopped after " + first_iterations,
+                                  control.last_value()));
     // The consistent co-rotational tangent can be indefinite at large
     // strains: GMRES does not need definiteness.
     SolverControl gmres_control(max_gmres_iterations, target);
@@ -469,12 +473,11 @@ namespace RestShape
       }
     catch (const SolverControl::NoConvergence &exc)
       {
-        throw SolverFailure(
-          "the iterative solver did not converge: CG stopped after " +
-          std::to_string(control.last_step()) + " and GMRES after " +
-          std::to_string(exc.last_step) + " iterations with residual " +
-          std::to_string(exc.last_residual) + " (target " +
-          std::to_string(target) + "); try Linear solver = direct");
+        throw SolverFailure(failure("CG stopped after " + first_iterations +
+                                      " and GMRES after " +
+                                      std::to_string(exc.last_step),
+                                    exc.last_residual) +
+                            "; try Linear solver = direct");
       }
     last_method = "GMRES+AMG";
     return control.last_step() + gmres_control.last_step();
