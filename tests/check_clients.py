@@ -35,6 +35,8 @@ import xml.etree.ElementTree as ET
 import vtk
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from vtk_grid import read_grid
+
 CELL_TYPES = {('tetrahedra', 1): vtk.VTK_TETRA,
               ('tetrahedra', 2): vtk.VTK_QUADRATIC_TETRA,
               ('hexahedra', 1): vtk.VTK_HEXAHEDRON,
@@ -45,16 +47,6 @@ failures = []
 
 def fail(path, text):
     failures.append(f'{path}: {text}')
-
-
-def read_grid(path):
-    reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith('.pvtu')
-              else vtk.vtkXMLUnstructuredGridReader())
-    reader.SetFileName(path)
-    reader.Update()
-    if reader.GetErrorCode() != 0:
-        return None
-    return reader.GetOutput()
 
 
 def distinct_points(grid):

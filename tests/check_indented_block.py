@@ -23,6 +23,8 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+from vtk_grid import read_grid
+
 # Vertex (xi, eta, zeta) of VTK's hexahedron, in its node order.
 HEX_CORNERS = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
                         (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], float)
@@ -30,11 +32,8 @@ GAUSS = (0.5 - 0.5 / np.sqrt(3), 0.5 + 0.5 / np.sqrt(3))
 
 
 def read(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    if grid.GetNumberOfPoints() == 0:
+    grid = read_grid(path)
+    if grid is None or grid.GetNumberOfPoints() == 0:
         sys.exit(f"check_indented_block.py: {path}: no points read")
     return grid
 

@@ -30,6 +30,9 @@ import sys
 
 import numpy as np
 from scipy.optimize import fsolve
+from vtk.util.numpy_support import vtk_to_numpy
+
+from vtk_grid import read_grid
 
 FIELD_TOLERANCE = 1e-5  # float32 fields of the VTU, relative
 
@@ -70,19 +73,13 @@ def read_nodes(directory):
 
 
 def read_cell_fields(directory):
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
     # Under MPI the .pvtu gathers the ranks' pieces.
-    files = sorted(glob.glob(f"{directory}/solution-*.pvtu"))
-    reader = vtk.vtkXMLPUnstructuredGridReader()
-    if not files:
-        files = sorted(glob.glob(f"{directory}/solution-*.vtu"))
-        reader = vtk.vtkXMLUnstructuredGridReader()
-    if not files:
-        sys.exit(f"check_patch_test.py: {directory}: no solution-*.vtu")
-    reader.SetFileName(files[-1])
-    reader.Update()
-    cells = reader.GetOutput().GetCellData()
+    files = (sorted(glob.glob(f"{directory}/solution-*.pvtu")) or
+             sorted(glob.glob(f"{directory}/solution-*.vtu")))
+    grid = read_grid(files[-1]) if files else None
+    if grid is None:
+        sys.exit(f"check_patch_test.py: {directory}: no readable solution-*.vtu")
+    cells = grid.GetCellData()
     return (vtk_to_numpy(cells.GetArray("volume_ratio")),
             vtk_to_numpy(cells.GetArray("pressure_Pa")))
 
