@@ -6,6 +6,7 @@
 #include <restshape/forward/forward_problem.h>
 #include <restshape/forward/load_scales.h>
 #include <restshape/loads/surface_load.h>
+#include <restshape/loads/ventricular_pressure.h>
 
 #include <cstdio>
 #include <limits>
@@ -86,30 +87,35 @@ namespace RestShape
     s.E = E_volume / volume;
     s.gravity_strain =
       std::abs(buoyed / volume) * gravity.norm() * s.height / s.E;
-    s.pressure_strain = std::abs(forward.loads().scene_load().weighted(
-                          SurfaceLoad::pressure_name)) /
-                        s.E;
+    // The larger of the pressures outside and in the ventricles.
+    const LoadState &load = forward.loads().scene_load();
+    s.pressure_strain =
+      std::max(std::abs(load.weighted(SurfaceLoad::pressure_name)),
+               std::abs(load.weighted(VentricularPressure::load_name))) /
+      s.E;
     return s;
   }
 
   std::string
   LoadScales::text() const
   {
-    char buffer[320];
-    std::snprintf(buffer,
-                  sizeof(buffer),
-                  "Body: %.4g x %.4g x %.4g mm, %.4g mm high along gravity, "
-                  "mass %.4g kg; Young's modulus %.4g Pa (volume mean of the "
-                  "free cells); strain of the weight rho g H / E = "
-                  "%.3g, of the surface pressure p / E = %.3g",
-                  mm_per_m * extent[0],
-                  mm_per_m * extent[1],
-                  mm_per_m * extent[2],
-                  mm_per_m * height,
-                  mass,
-                  E,
-                  gravity_strain,
-                  pressure_strain);
+    char buffer[400];
+    std::snprintf(
+      buffer,
+      sizeof(buffer),
+      "Body: %.4g x %.4g x %.4g mm, %.4g mm high along gravity, "
+      "mass %.4g kg; Young's modulus %.4g Pa (volume mean of the "
+      "free cells); strain of the weight rho g H / E = "
+      "%.3g, of the pressure p / E = %.3g (the larger of the surface "
+      "and the ventricular pressure)",
+      mm_per_m * extent[0],
+      mm_per_m * extent[1],
+      mm_per_m * extent[2],
+      mm_per_m * height,
+      mass,
+      E,
+      gravity_strain,
+      pressure_strain);
     return buffer;
   }
 

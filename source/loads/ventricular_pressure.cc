@@ -7,10 +7,12 @@ namespace RestShape
 {
   using namespace dealii;
 
+  const std::string VentricularPressure::load_name = "Ventricular pressure";
+
   namespace
   {
-    const std::string name  = "Ventricular pressure";
-    const std::string entry = "Loads/" + name;
+    const std::string &name  = VentricularPressure::load_name;
+    const std::string  entry = "Loads/" + name;
   } // namespace
 
   LoadTermInfo

@@ -19,6 +19,9 @@ namespace RestShape
   class VentricularPressure : public SurfacePressure
   {
   public:
+    /// Its load (and parameter) name, "Ventricular pressure".
+    static const std::string load_name;
+
     static LoadTermInfo
     info();
 
