@@ -36,9 +36,6 @@ export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
 mu_block=80194000 # Pa (bc reads no exponent)
 mu_brain=670
 
-key() { # file key
-  grep -o "\"$2\": [-0-9.e+a-z]*" "$1" | head -n 1 | sed 's/.*: //'
-}
 # run NAME SOLVER PRM ARGS...: one line of the table.
 run() {
   local name=$1 solver=$2 prm=$3
@@ -55,9 +52,9 @@ run() {
   grep -q "restshape: error: .*the iterative solver did not converge" "$dir.log" &&
     fallback="yes, the run stopped"
   printf '| %s | %s | %s | %s | %s | %s | %s | %.1f |\n' "$name" "$solver" "$code" \
-    "$(key "$dir/summary.json" newton_iterations)" \
-    "$(key "$dir/summary.json" direct_inverse_newton_steps) / $(key "$dir/summary.json" direct_inverse_jacobian_products)" \
-    "$(key "$dir/summary.json" linear_iterations_per_newton_step)" "$fallback" \
+    "$(value newton_iterations "$dir/summary.json")" \
+    "$(value direct_inverse_newton_steps "$dir/summary.json") / $(value direct_inverse_jacobian_products "$dir/summary.json")" \
+    "$(value linear_iterations_per_newton_step "$dir/summary.json")" "$fallback" \
     "$(echo "$end - $start" | bc)" | tee -a "$out/table.md"
 }
 brain_args() { # nu inverse: the bulk modulus for the cerebrum's nu
@@ -82,7 +79,7 @@ if $coarse; then
       echo "FAIL: CG + AMG did not converge at nu = $nu ($(grep -m 1 'error:' "$dir.log"))"
       status=1
     fi
-    its=$(key "$dir/summary.json" linear_iterations_per_newton_step)
+    its=$(value linear_iterations_per_newton_step "$dir/summary.json")
     if [ "$nu" = 0.4977 ] && ! awk -v a="${its:-1e9}" -v b="$max_iterations" 'BEGIN { exit !(a <= b) }'; then
       echo "FAIL: $its CG iterations per Newton step at nu = 0.4977 (at most $max_iterations)"
       status=1
