@@ -7,7 +7,8 @@
 # of the RMS error, and its cavity within 2 % of the exact displacement
 # ratio of nu = 0.3; Formulation = auto chooses mixed there (summary.json)
 # and gives the same nodes; the displacement formulation at 0.4999 warns;
-# the pressure_Pa cell field (VTK's reader) has the exact mean pressure.
+# the pressure_Pa cell field (VTK's reader) has the exact mean pressure;
+# P1 mixed at 0.4999 notes that its error stops falling under refinement.
 # usage: run_lame_locking.sh RESTSHAPE OUTPUT_DIRECTORY
 set -eu
 exe=$1
@@ -88,6 +89,16 @@ run p1_mixed_0.4999 0.4999 --set Discretization/Formulation=mixed \
 read -r rms cavity < <(figures p1_mixed_0.4999 0.4999)
 grep -q "averaged nodal pressure" "$out/p1_mixed_0.4999.log" ||
   { echo "FAIL: P1 mixed does not name its element"; exit 1; }
+# Its error stops falling under refinement from nu = 0.495 on
+# (benchmarks/nodal_pressure_rates): the run says so, P2-P0 does not.
+grep -q "^Note: at Poisson's ratio 0.4999 (0.495 or above) the averaged nodal pressure's error stops" \
+  "$out/p1_mixed_0.4999.log" || { echo "FAIL: P1 mixed at 0.4999 without its note"; exit 1; }
+grep -q '"formulation_note": "at Poisson' "$out/p1_mixed_0.4999/summary.json" ||
+  { echo "FAIL: summary.json of P1 mixed at 0.4999 without formulation_note"; exit 1; }
+! grep -q '"formulation_note"' "$out/mixed_0.4999/summary.json" ||
+  { echo "FAIL: P2-P0's summary.json has a formulation_note"; exit 1; }
+! grep -q "^Note: .*averaged nodal pressure" "$out/mixed_0.4999.log" ||
+  { echo "FAIL: P2-P0 has the averaged nodal pressure's note"; exit 1; }
 if awk -v r="$rms" -v r0="$rms_p1" -v c="$cavity" \
   'BEGIN { exit !(r <= 1.1 * r0 && c >= 0.85) }'; then
   echo "ok: P1 mixed at nu = 0.4999: RMS $rms % (P1 at 0.3: $rms_p1 %), cavity $cavity"

@@ -189,6 +189,8 @@ namespace RestShape
                   "the averaged nodal pressure of linear tetrahedra" :
                   "a pressure constant per cell (its mean dilatation)")
             << std::endl;
+    if (!d.formulation_note.empty())
+      pcout << "Note: " << d.formulation_note << std::endl;
   }
 
   std::set<Label>

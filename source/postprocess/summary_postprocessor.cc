@@ -120,6 +120,9 @@ namespace RestShape
     summary.set("tangent", p.forward.discretization.tangent_name);
     summary.set("formulation",
                 p.forward.discretization.mixed ? "mixed" : "displacement");
+    if (!p.forward.discretization.formulation_note.empty())
+      summary.set("formulation_note",
+                  p.forward.discretization.formulation_note);
     summary.set("n_cells",
                 long(in.mesh.triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(r.n_nodes));

@@ -35,6 +35,9 @@ namespace RestShape
     /// After resolve_formulation(): what the run says about the choice
     /// (empty: nothing to say).
     std::string formulation_warning;
+    /// After resolve_formulation(): a note on the accuracy of the chosen
+    /// element at this Poisson's ratio (empty: nothing to say).
+    std::string formulation_note;
 
     /// Resolve Formulation = auto (mixed where @p max_poissons_ratio is
     /// nearly_incompressible or above and the element has a mixed form)
@@ -43,6 +46,9 @@ namespace RestShape
     resolve_formulation(const double max_poissons_ratio, const bool simplex);
     /// From this Poisson's ratio on, displacement elements lock.
     static constexpr double nearly_incompressible = 0.49;
+    /// From this Poisson's ratio on, the averaged nodal pressure's error
+    /// stops falling under refinement (doc/model.md, "Under refinement").
+    static constexpr double nodal_pressure_stalls = 0.495;
 
     /// Whether every component of @p label is fixed.
     bool

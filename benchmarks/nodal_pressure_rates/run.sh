@@ -1,0 +1,86 @@
+#!/bin/bash
+# How far the averaged nodal pressure tetrahedron (P1, Discretization/
+# Formulation = mixed) converges as Poisson's ratio nears 0.5: the Lame
+# shell (tests/data/lame_shell.prm: radii 10 and 20 mm, 1 Pa in the
+# cavity, an elastic support outside, E = 3 kPa) on gmsh meshes of 4 to
+# 1.4 mm (meshes/make_shell.py), the RMS error of the radial displacement
+# against the closed form (tests/check_lame_shell.py) for P1 displacement
+# at nu = 0.3 (the reference) and P1 mixed at several ratios, with the
+# rate of each pair of meshes against h ~ nodes^(-1/3). One table in
+# markdown, the runs' CSV in $OUT/rates.csv.
+#
+# usage: benchmarks/nodal_pressure_rates/run.sh [--coarse]
+#   --coarse: the 4 and 2.8 mm meshes at nu = 0.4977 only (the test's
+#   version); fails unless P1 mixed at 0.4977 is within 1.1 times the
+#   error of P1 displacement at 0.3 on the 2.8 mm mesh.
+# Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
+# nodal_pressure_rates).
+set -eu -o pipefail
+exe=${RESTSHAPE:-build/restshape}
+out=${OUT:-output/benchmarks/nodal_pressure_rates}
+here=$(dirname "$0")
+source "$here/../common.sh"
+sizes=(4 2.8 2 1.6 1.4)
+ratios=(0.3 0.45 0.49 0.4977 0.4999)
+coarse=false
+if [ "${1:-}" = --coarse ]; then
+  coarse=true
+  sizes=(4 2.8)
+  ratios=(0.4977)
+fi
+rm -rf "$out"
+mkdir -p "$out"
+for h in "${sizes[@]}"; do
+  /usr/bin/python3 meshes/make_shell.py "$out/shell_$h.msh" 10 20 2 "$h"
+done
+
+# error FORMULATION NU H: "RMS_PERCENT NODES SECONDS" of one run.
+error() {
+  local name=$1_$2_$3 figure seconds_taken
+  seconds_taken=$(seconds "$exe" --set "Output/Directory=$out/$name" \
+    --set "Mesh/File=$out/shell_$3.msh" --set "Discretization/Formulation=$1" \
+    --set "Materials/Poisson's ratio=$2" --set "Solver/Check stability=false" \
+    tests/data/lame_shell.prm 2>&1 >"$out/$name.log") ||
+    { echo "FAIL: $name did not run (see $out/$name.log)" >&2; exit 1; }
+  figure=$(/usr/bin/python3 tests/check_lame_shell.py "$out/$name/nodes.csv" --E 3000 \
+    --nu "$2" --p-inner 1 --support 1e3 --label "$name" |
+    sed -E 's/.*displacement ([0-9.]+) %.*/\1/')
+  echo "$figure $(value n_nodes "$out/$name/summary.json") $seconds_taken"
+}
+
+echo "machine: $(machine); tests/data/lame_shell.prm, meshes of ${sizes[*]} mm"
+header="| element | nu |"
+rule="| --- | --- |"
+for h in "${sizes[@]}"; do
+  header+=" $h mm |"
+  rule+=" --- |"
+done
+printf '\n%s rate (last pair) |\n%s --- |\n' "$header" "$rule"
+echo "formulation,nu,h_mm,nodes,rms_percent,seconds" >"$out/rates.csv"
+declare -A errors
+for c in displacement:0.3 $(printf 'mixed:%s ' "${ratios[@]}"); do
+  IFS=: read -r formulation nu <<<"$c"
+  line="| P1 $formulation | $nu |"
+  previous=""
+  for h in "${sizes[@]}"; do
+    read -r e n s < <(error "$formulation" "$nu" "$h")
+    echo "$formulation,$nu,$h,$n,$e,$s" >>"$out/rates.csv"
+    errors[$formulation:$nu:$h]=$e
+    line+=" $e |"
+    if [ -n "$previous" ]; then
+      rate=$(awk -v a="$previous" -v e="$e" -v n="$n" 'BEGIN { split(a, p, " ")
+        printf "%.2f", log(p[1] / e) / (log(n / p[2]) / 3) }')
+    fi
+    previous="$e $n"
+  done
+  echo "$line $rate |"
+done
+if $coarse; then
+  e=${errors[mixed:0.4977:2.8]} e0=${errors[displacement:0.3:2.8]}
+  if awk -v e="$e" -v e0="$e0" 'BEGIN { exit !(e <= 1.1 * e0) }'; then
+    echo "ok: P1 mixed at nu = 0.4977 on 2.8 mm: $e % (P1 displacement at 0.3: $e0 %)"
+  else
+    echo "FAIL: P1 mixed at nu = 0.4977 on 2.8 mm: $e % against $e0 % for P1 displacement at 0.3"
+    exit 1
+  fi
+fi
