@@ -1,12 +1,15 @@
 #!/bin/bash
 # Study mode: restshape --study over element degree and refinement of the
 # inverse column (exact rest shape known) runs every combination in its own
-# folder and writes one table: 4 rows, all converged, the exact rest-shape
+# folder and writes one table: 4 rows, all converged with the displacement
+# formulation (the column's nu = 0 is below auto's 0.49), the exact rest-shape
 # errors falling with refinement for both degrees, P2 at least 100 times as
 # accurate as P1 on the same mesh, the direct inverse's Newton steps
 # counted, each run's rest shape against the finest run's (P1 farther from
 # it than P2 on the same mesh), a point per run in the plot, and one line
-# per run started and finished.
+# per run started and finished. A study over Poisson's ratio on the Lame
+# shell (tests/data/lame_shell.prm) names the formulation auto chose per
+# row: displacement at 0.45, mixed at 0.4999.
 #
 # usage: run_study.sh RESTSHAPE OUTPUT_DIRECTORY
 set -eu
@@ -24,7 +27,7 @@ csv=$out/study/study.csv
 [ -d "$out/study/04_Polynomial-degree-2_Global-refinements-1" ] ||
   { echo "FAIL: no folder per run"; exit 1; }
 awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
-  { ++n; conv = conv && $col["converged"] == "true"
+  { ++n; conv = conv && $col["converged"] == "true" && $col["formulation"] == "displacement"
     steps = steps && $col["direct_inverse_newton_steps"] > 0
     p = $col["Polynomial degree"]; r = $col["Global refinements"]
     e[p, r] = $col["rest_l2_error_relative"]; d[p, r] = $col["rest_shape_difference_to_finest"] }
@@ -39,4 +42,12 @@ awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
   { echo "FAIL: not one point per run in the plot"; exit 1; }
 [ "$(grep -c 'started: ' "$out.log")" -eq 4 ] && [ "$(grep -c 'finished: converged, .* DoFs' "$out.log")" -eq 4 ] ||
   { echo "FAIL: not one line per run started and finished"; exit 1; }
+"$exe" --study "Materials/Poisson's ratio=0.45,0.4999" --set "Output/Directory=$out/nu" \
+  --set "Solver/Check stability=false" tests/data/lame_shell.prm >"$out.nu.log" ||
+  { echo "FAIL: the study over Poisson's ratio"; tail -n 5 "$out.nu.log"; exit 1; }
+formulations=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  { printf "%s:%s ", $col["Poisson'"'"'s ratio"], $col["formulation"] }' "$out/nu/study/study.csv")
+[ "$formulations" = "0.45:displacement 0.4999:mixed " ] ||
+  { echo "FAIL: formulation column: $formulations"; exit 1; }
+echo "formulation column: $formulations"
 echo ok

@@ -449,7 +449,8 @@ namespace RestShape
     std::vector<std::vector<std::string>> rows;
     for (const StudyAxis &axis : axes)
       header.push_back(axis.parameter.substr(axis.parameter.rfind('/') + 1));
-    header.insert(header.end(), {"exit_code", "converged", "n_dofs"});
+    header.insert(header.end(),
+                  {"exit_code", "converged", "n_dofs", "formulation"});
     header.insert(header.end(), costs.begin(), costs.end());
     header.insert(header.end(), errors.begin(), errors.end());
     header.insert(header.end(), inverse_errors.begin(), inverse_errors.end());
@@ -473,6 +474,7 @@ namespace RestShape
         row.push_back(std::to_string(run.exit_code));
         row.push_back(run.summary.get<std::string>("converged", "false"));
         row.push_back(text(run.number("n_dofs")));
+        row.push_back(run.summary.get<std::string>("formulation", "-"));
         for (const auto *keys : {&costs, &errors, &inverse_errors})
           for (const std::string &key : *keys)
             row.push_back(text(run.number(key)));
