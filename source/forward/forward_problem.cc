@@ -70,7 +70,10 @@ namespace RestShape
         BufferType like(discretization_.locally_owned_dofs(),
                         discretization_.locally_relevant_dofs(),
                         discretization_.communicator());
-        nodal_volumes.reinit(discretization_.dof_handler(), like);
+        nodal_volumes.reinit(
+          discretization_.dof_handler(),
+          like,
+          parameters.discretization.boundary_shares_to_interior);
         nodal_volumes.add_sparsity(dsp, discretization_.base_constraints());
       }
     if (parameters.discretization.mixed)

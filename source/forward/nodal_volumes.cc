@@ -26,7 +26,9 @@ namespace RestShape
   } // namespace
 
   void
-  NodalVolumes::reinit(const DoFHandler<3> &dof_handler, const BufferType &like)
+  NodalVolumes::reinit(const DoFHandler<3> &dof_handler,
+                       const BufferType    &like,
+                       const bool           boundary_to_interior)
   {
     const FiniteElement<3> &fe = dof_handler.get_fe();
     AssertThrow(fe.n_dofs_per_cell() == dofs_per_cell,
@@ -56,28 +58,32 @@ namespace RestShape
           }
         for (unsigned int v = 0; v < vertices_per_cell; ++v)
           c.vertices[v] = dof_cell->vertex(v);
-        const Tensor<1, 3> a     = c.vertices[1] - c.vertices[0],
-                           b     = c.vertices[2] - c.vertices[0],
-                           e     = c.vertices[3] - c.vertices[0];
-        c.orientation            = a * cross_product_3d(b, e) > 0 ? 1 : -1;
-        const unsigned int index = cells.size();
-        of_cell[dof_cell->active_cell_index()] = index;
-        for (unsigned int v = 0; v < vertices_per_cell; ++v)
-          {
-            const unsigned int x = c.local[3 * v];
-            if (x >= partitioner.locally_owned_size())
-              continue;
-            if (slot[x] < 0)
-              {
-                slot[x] = patches.size();
-                owned_vertex.push_back(x);
-                patches.emplace_back();
-              }
-            patches[slot[x]].push_back(index);
-          }
+        const Tensor<1, 3> a = c.vertices[1] - c.vertices[0],
+                           b = c.vertices[2] - c.vertices[0],
+                           e = c.vertices[3] - c.vertices[0];
+        c.orientation        = a * cross_product_3d(b, e) > 0 ? 1 : -1;
+        of_cell[dof_cell->active_cell_index()] = cells.size();
         labels.push_back(c.label);
         cells.push_back(c);
       }
+    if (boundary_to_interior)
+      set_shares(dof_handler, like);
+    // A vertex's patch: the cells that give it a share of their volume.
+    for (unsigned int index = 0; index < cells.size(); ++index)
+      for (unsigned int v = 0; v < vertices_per_cell; ++v)
+        {
+          const unsigned int x = cells[index].local[3 * v];
+          if (x >= partitioner.locally_owned_size() ||
+              cells[index].share[v] == 0)
+            continue;
+          if (slot[x] < 0)
+            {
+              slot[x] = patches.size();
+              owned_vertex.push_back(x);
+              patches.emplace_back();
+            }
+          patches[slot[x]].push_back(index);
+        }
     known = false;
     linear_change.reinit(like);
     // Every rank holds a vector per label of any rank: compress is
@@ -87,6 +93,55 @@ namespace RestShape
          Utilities::MPI::compute_set_union(labels,
                                            partitioner.get_mpi_communicator()))
       volumes[Label(label)].reinit(like);
+  }
+
+  void
+  NodalVolumes::set_shares(const DoFHandler<3> &dof_handler,
+                           const BufferType    &like)
+  {
+    // A boundary vertex's own patch is a few cells, and its one volume
+    // ratio holds their volumes much as a pressure per cell would: the
+    // element locked there (the Lame shell at nu = 0.4999: 7.0, 7.1,
+    // 7.5 % on 2, 1.6, 1.4 mm). Its share goes to the cell's interior
+    // vertices instead; under a homogeneous state every vertex still has
+    // the one volume ratio (the patch test).
+    BufferType on_boundary(like);
+    for (const auto &dof_cell : dof_handler.active_cell_iterators())
+      if (dof_cell->is_locally_owned())
+        {
+          const Cell &c = cells[of_cell[dof_cell->active_cell_index()]];
+          for (const unsigned int f : dof_cell->face_indices())
+            if (dof_cell->at_boundary(f))
+              for (unsigned int v = 0; v < vertices_per_cell; ++v)
+                for (const unsigned int fv :
+                     dof_cell->face(f)->vertex_indices())
+                  if (dof_cell->face(f)->vertex_index(fv) ==
+                      dof_cell->vertex_index(v))
+                    on_boundary.local_element(c.local[3 * v]) = 1;
+        }
+    on_boundary.compress(VectorOperation::max);
+    on_boundary.update_ghost_values();
+    for (Cell &c : cells)
+      {
+        unsigned int interior = 0;
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          interior += on_boundary.local_element(c.local[3 * v]) == 0;
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          c.share[v] =
+            interior == 0 ?
+              vertex_share :
+              (on_boundary.local_element(c.local[3 * v]) == 0 ? 1.0 / interior :
+                                                                0.0);
+      }
+  }
+
+  unsigned int
+  NodalVolumes::vertex_of(const Cell &cell, const unsigned int x)
+  {
+    unsigned int v = 0;
+    while (v + 1 < vertices_per_cell && cell.local[3 * v] != x)
+      ++v;
+    return v;
   }
 
   void
@@ -152,12 +207,12 @@ namespace RestShape
       if (c.owned)
         {
           BufferType  &v       = volumes.at(c.label);
-          const double rest    = vertex_share * volume(c, w);
-          const double current = vertex_share * volume(c, d);
+          const double rest    = volume(c, w);
+          const double current = volume(c, d);
           for (unsigned int i = 0; i < vertices_per_cell; ++i)
             {
-              v.local_element(c.local[3 * i]) += rest;
-              v.local_element(c.local[3 * i + 1]) += current;
+              v.local_element(c.local[3 * i]) += c.share[i] * rest;
+              v.local_element(c.local[3 * i + 1]) += c.share[i] * current;
             }
         }
     for (auto &[label, v] : volumes)
@@ -182,8 +237,7 @@ namespace RestShape
             change += gradient0[index][i] *
                       (d.local_element(c.local[i]) - d0[index][i]);
           for (unsigned int v = 0; v < vertices_per_cell; ++v)
-            linear_change.local_element(c.local[3 * v]) +=
-              vertex_share * change;
+            linear_change.local_element(c.local[3 * v]) += c.share[v] * change;
         }
     linear_change.compress(VectorOperation::add);
     linear_change.update_ghost_values();
@@ -229,6 +283,11 @@ namespace RestShape
       {
         result.rest += volume.local_element(x);
         current += volume.local_element(y);
+      }
+    if (result.rest == 0) // a boundary vertex without a share: no ratio
+      {
+        result.J = 1;
+        return result;
       }
     result.J = current / result.rest;
     if (!(result.J > 0 && result.rest > 0))
@@ -277,15 +336,17 @@ namespace RestShape
     CellPressure       result;
     for (unsigned int v = 0; v < vertices_per_cell; ++v)
       {
+        if (c.share[v] == 0)
+          continue;
         const Vertex n = vertex(c, v, materials);
         if (!n.valid)
           {
             result.valid = false;
             return result;
           }
-        result.pressure += vertex_share * n.pressure;
-        result.predicted += vertex_share * n.predicted;
-        result.energy += vertex_share * rest_volume * law.volumetric(n.J).U;
+        result.pressure += c.share[v] * n.pressure;
+        result.predicted += c.share[v] * n.predicted;
+        result.energy += c.share[v] * rest_volume * law.volumetric(n.J).U;
       }
     return result;
   }
@@ -309,6 +370,7 @@ namespace RestShape
           {
             const Cell                  &c      = cells[index];
             const std::array<double, 12> g_cell = volume_gradient(c, d);
+            const double share = c.share[vertex_of(c, owned_vertex[s])];
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
                 const auto at =
@@ -316,17 +378,15 @@ namespace RestShape
                 if (at == patch.end())
                   {
                     patch.push_back(c.dofs[i]);
-                    g.push_back(vertex_share * g_cell[i]);
+                    g.push_back(share * g_cell[i]);
                   }
                 else
-                  g[at - patch.begin()] += vertex_share * g_cell[i];
+                  g[at - patch.begin()] += share * g_cell[i];
               }
           }
         const Cell  &first = cells[patches[s].front()];
-        unsigned int v     = 0;
-        while (first.local[3 * v] != owned_vertex[s])
-          ++v;
-        const double factor = vertex(first, v, materials).stiffness;
+        const double factor =
+          vertex(first, vertex_of(first, owned_vertex[s]), materials).stiffness;
         if (std::none_of(patch.begin(), patch.end(), [&](const auto i) {
               return constraints.is_constrained(i);
             }))

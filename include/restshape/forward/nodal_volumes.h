@@ -35,8 +35,12 @@ namespace RestShape
     /// The locally owned and ghost cells of @p dof_handler (linear
     /// tetrahedra of a 3-component element), for vectors of the layout
     /// of @p like (locally relevant entries).
+    /// With @p boundary_to_interior, a boundary vertex's share of each
+    /// cell's volume goes to the cell's interior vertices (set_shares()).
     void
-    reinit(const dealii::DoFHandler<3> &dof_handler, const BufferType &like);
+    reinit(const dealii::DoFHandler<3> &dof_handler,
+           const BufferType            &like,
+           const bool                   boundary_to_interior = false);
 
     /// Adds to @p dsp the couplings of every DoF of the cells around each
     /// locally owned vertex (the stiffness of its volume), under
@@ -131,7 +135,19 @@ namespace RestShape
       Label                                           label = 0;
       double orientation = 1; // sign of the mesh cell's volume
       bool   owned       = false;
+      // Each vertex's share of the cell's volume: 1 / (the cell's
+      // interior vertices) at an interior vertex, 0 at a boundary one; a
+      // quarter each where all four are on the boundary.
+      std::array<double, 4> share = {{0.25, 0.25, 0.25, 0.25}};
     };
+    /// The vertex of @p cell whose x-DoF has the local index @p x.
+    static unsigned int
+    vertex_of(const Cell &cell, const unsigned int x);
+    /// Sets the cells' shares from the vertices on the domain's boundary
+    /// (the boundary faces of the locally owned cells). Collective.
+    void
+    set_shares(const dealii::DoFHandler<3> &dof_handler,
+               const BufferType            &like);
 
     /// The positions vertex + @p u of @p cell's vertices.
     static std::array<dealii::Point<3>, 4>
