@@ -6,7 +6,9 @@
 // hexahedra) at nu = 0.4999, for every law, at a deformed state (a bend
 // and a squeeze of the free part), K v against central differences of the
 // residual along a smooth v; and the residual is the derivative of the
-// energy (central differences along v).
+// energy (central differences along v). Linear tetrahedra also with
+// Discretization/Nodal pressure at the boundary = interior (boundary
+// vertices give their shares of the cells' volumes to interior ones).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
@@ -24,7 +26,8 @@ namespace
   std::string
   prm_text(const std::string &cell_type,
            const unsigned int degree,
-           const std::string &law)
+           const std::string &law,
+           const std::string &boundary)
   {
     return "subsection Mesh\n set File = meshes/cantilever_tet.msh\n"
            " set Length unit = mm\n set Cell type = " +
@@ -32,7 +35,10 @@ namespace
            "\nend\n"
            "subsection Discretization\n set Polynomial degree = " +
            std::to_string(degree) +
-           "\n set Formulation = mixed\nend\n"
+           "\n set Formulation = mixed\n"
+           " set Nodal pressure at the boundary = " +
+           boundary +
+           "\nend\n"
            "subsection Materials\n set Young's modulus = 100000\n"
            " set Poisson's ratio = 0.4999\n set Density = 1000\n"
            " set Material law = " +
@@ -62,16 +68,18 @@ namespace
   void
   check(const std::string &cell_type,
         const unsigned int degree,
-        const std::string &law)
+        const std::string &law,
+        const std::string &boundary = "own")
   {
-    Scene             s(prm_text(cell_type, degree, law));
+    Scene             s(prm_text(cell_type, degree, law, boundary));
     ForwardProblem   &f    = *s.forward;
     const LoadState   load = f.loads().scene_load();
     const VectorType  w    = f.discretization().zero_vector();
     const VectorType  d    = field(s, 0.5, 0.05);
     const VectorType  v    = field(s, 0.3, -0.2);
     const std::string name =
-      cell_type + " P" + std::to_string(degree) + " " + law + ": ";
+      cell_type + " P" + std::to_string(degree) + " " + law +
+      (boundary == "own" ? "" : " (boundary " + boundary + ")") + ": ";
     constexpr double h           = 1e-7;
     const auto       residual_at = [&](const double t, double *energy) {
       VectorType x = d;
@@ -123,6 +131,7 @@ main(int argc, char **argv)
   for (const std::string law : {"neo-Hookean", "corotational", "Ogden"})
     {
       check("tetrahedra", 1, law);
+      check("tetrahedra", 1, law, "interior");
       check("tetrahedra", 2, law);
       check("hexahedra", 1, law);
     }
