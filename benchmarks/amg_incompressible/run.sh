@@ -21,11 +21,13 @@
 #   version in the tests); fails if CG + AMG fails there or needs more than
 #   MAX_ITERATIONS (60) per Newton step at 0.4977.
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/
-# amg_incompressible).
+# amg_incompressible), BLOCK_RATIOS (the block's Poisson's ratios, "0.45
+# 0.49 0.4977 0.4999"; empty: the brain alone).
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/amg_incompressible}
 max_iterations=${MAX_ITERATIONS:-60}
+block_ratios=${BLOCK_RATIOS-0.45 0.49 0.4977 0.4999}
 coarse=false
 [ "${1:-}" = --coarse ] && coarse=true
 here=$(dirname "$0")
@@ -88,7 +90,7 @@ if $coarse; then
   exit $status
 fi
 /usr/bin/python3 meshes/make_block.py "$out/block_16.msh" 16 1
-for nu in 0.45 0.49 0.4977 0.4999; do
+for nu in $block_ratios; do
   E=$(echo "2 * $mu_block * (1 + $nu)" | bc -l)
   for solver in cg-amg direct auto; do
     run "block_nu$nu" $solver prm/indented_block.prm --set "Mesh/File=$out/block_16.msh" \

@@ -9,8 +9,10 @@
 # maximum, the RMS relative to the RMS of |u_ref|, and the total potential
 # energy (J; of two equilibria the lower is preferred, doc/model.md). Cases are
 # element:level, tetrahedra for P, hexahedra (each tetrahedron split into
-# four) for Q; the reference is a case of its own. Without SET the scene is
-# as in prm/brain.prm (skull contact, CSF pressure, elastic support).
+# four) for Q; the reference is a case of its own. An element name ending
+# in m (P1m, P2m, Q1m) is the mixed formulation, else the displacement one
+# (Discretization/Formulation). Without SET the scene is as in PRM
+# (prm/brain.prm: skull contact, CSF pressure, elastic support).
 # Adaptive cases (hexahedra only): level aNk or aNt, N cycles refining 30 %
 # of the cells (Adaptive refinement/Refine fraction) by Kelly's indicator
 # (k) or the traction jump (t); the seconds are those of all N + 1 solves.
@@ -21,7 +23,8 @@
 # usage: benchmarks/time_vs_error/brain.sh [--coarse]
 #   --coarse: P1 level 0 against P1 level 1 (the version run in the tests)
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/time_vs_error),
-# CASES ("P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0"), REFERENCE (P2:2),
+# CASES ("P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0"), REFERENCE (P2:2), PRM
+# (prm/brain.prm; prm/brain_in_vivo.prm needs its scenarios off in SET),
 # SET (extra 'Section/Parameter=value' settings separated by '|', e.g.
 # 'Contact/Obstacle file=|Solver/Tangent shift=1e-3'), MESH (the coarse mesh,
 # meshes/brain_coarse.msh; another one, e.g. made with restshape-mesh
@@ -32,6 +35,7 @@ out=${OUT:-output/benchmarks/time_vs_error}/brain
 cases=${CASES:-P1:0 P1:1 P1:2 P2:0 P2:1 Q1:0}
 reference=${REFERENCE:-P2:2}
 mesh=${MESH:-meshes/brain_coarse.msh}
+prm=${PRM:-prm/brain.prm}
 if [ "${1:-}" = --coarse ]; then
   cases=P1:0
   reference=P1:1
@@ -40,8 +44,9 @@ mkdir -p "$out"
 source "$(dirname "$0")/../common.sh"
 
 run() { # element:level
-  local element=${1%%:*} level=${1##*:} cells=tetrahedra
+  local element=${1%%:*} level=${1##*:} cells=tetrahedra formulation=displacement
   [[ $element == Q* ]] && cells=hexahedra
+  [[ $element == *m ]] && formulation=mixed
   local dir=$out/${element}_$level
   local refine=(--set "Mesh/Global refinements=$level")
   if [[ $level == a* ]]; then # aNk / aNt: N adaptive cycles, Kelly / traction jump
@@ -62,11 +67,11 @@ run() { # element:level
     --set "Inverse problem/Enabled=false" --set "Scenario/Enabled=false" \
     --set "Solver/Linear solver=cg-amg" --set "Mesh/Cell type=$cells" \
     --set "Discretization/Polynomial degree=${element:1:1}" --set "Mesh/File=$mesh" "${refine[@]}" \
-    "${extra[@]}" prm/brain.prm >"$dir.log" 2>&1 ||
+    --set "Discretization/Formulation=$formulation" "${extra[@]}" "$prm" >"$dir.log" 2>&1 ||
     { echo "| $element | $level | failed: $(tail -n 1 "$dir.log") |"; return 1; }
 }
 
-echo "scene: prm/brain.prm on $mesh${SET:+ with $SET}, forward; reference $reference; machine: $(machine)"
+echo "scene: $prm on $mesh${SET:+ with $SET}, forward; reference $reference; machine: $(machine)"
 status=0
 run "$reference" || exit 1
 for c in $cases; do

@@ -185,9 +185,13 @@ namespace RestShape
       pcout << "Warning: " << d.formulation_warning << std::endl;
     if (d.mixed)
       pcout << "Formulation: mixed, "
-            << (d.nodal_pressure ?
-                  "the averaged nodal pressure of linear tetrahedra" :
-                  "a pressure constant per cell (its mean dilatation)")
+            << (!d.nodal_pressure ?
+                  "a pressure constant per cell (its mean dilatation)" :
+                d.boundary_shares_to_interior ?
+                  "the averaged nodal pressure of linear tetrahedra "
+                  "(boundary vertices: interior)" :
+                  "the averaged nodal pressure of linear tetrahedra "
+                  "(boundary vertices: own)")
             << std::endl;
     if (!d.formulation_note.empty())
       pcout << "Note: " << d.formulation_note << std::endl;

@@ -55,32 +55,32 @@ namespace RestShape
       "mean dilatation, the integral of J over the cell's rest volume (a "
       "pressure constant per cell: P2-P0, Q1-P0, Q2-P0); on linear "
       "tetrahedra the averaged nodal pressure (Bonet and Burton 1998, as "
-      "Joldes, Wittek and Miller use for brain shift): each vertex's "
-      "volume, a quarter of each cell around it, one volume ratio per "
-      "vertex, each label's U(J) on its share of the vertex's rest volume, "
-      "a cell's pressure the mean of its vertices' (its stiffness couples "
-      "the cells around a vertex, which widens the matrix; from Poisson's "
-      "ratio 0.495 on its error stops falling under refinement, so use "
-      "degree 2 for converged figures). auto: mixed where some label's Poisson's "
+      "Joldes, Wittek and Miller use for brain shift): one volume ratio "
+      "per vertex over the cells around it, each label's U(J) on its "
+      "share of the vertex's rest volume, a cell's pressure the mean of "
+      "its vertices' (its stiffness couples the cells around a vertex, "
+      "which widens the matrix; see Nodal pressure at the boundary). "
+      "auto: mixed where some label's Poisson's "
       "ratio is 0.49 or above, else displacement (with a warning where "
       "displacement is chosen at 0.49 and above).");
     prm.declare_entry(
       "Nodal pressure at the boundary",
-      "own",
+      "interior",
       Patterns::Selection("own|interior"),
       "The averaged nodal pressure of linear tetrahedra (Formulation = "
-      "mixed, degree 1) at the vertices on the domain's boundary. own: "
-      "each boundary vertex has its own volume, a quarter of each cell "
-      "around it (Bonet and Burton 1998); its patch is a few cells, which "
-      "it holds at nearly constant volume, so the element locks as "
-      "Poisson's ratio nears 0.5 (a thick shell under pressure, nu = "
-      "0.4999: 7.0, 7.1 and 7.5 % RMS error on cells of 2, 1.6 and 1.4 "
-      "mm). interior: a cell gives its volume to its interior vertices "
-      "only (to all four where none is interior), so boundary vertices "
-      "carry no volume ratio of their own; the same shell: 4.5 and 3.0 % "
-      "on 2 and 1.4 mm, as accurate as P1 at nu = 0.3 (5.3 and 3.5 %), "
-      "and the patch test holds. Not yet the default: the manual's figures "
-      "are those of own.");
+      "mixed, degree 1) at the vertices on the domain's boundary. "
+      "interior: a cell gives its volume to its interior vertices only "
+      "(to all four where none is interior), so boundary vertices carry "
+      "no volume ratio of their own; it converges at the same rate "
+      "whatever Poisson's ratio (a thick shell under pressure, nu = "
+      "0.4999: 4.5 and 3.0 % RMS error on cells of 2 and 1.4 mm, where "
+      "P1 at nu = 0.3 has 5.3 and 3.5 %), and the patch test holds. "
+      "own: each boundary vertex has its own volume, a quarter of each "
+      "cell around it (Bonet and Burton 1998); its patch is a few cells, "
+      "which it holds at nearly constant volume, so from Poisson's ratio "
+      "0.495 on the element locks and its error stops falling under "
+      "refinement (the same shell: 7.0, 7.1 and 7.5 % on cells of 2, 1.6 "
+      "and 1.4 mm); kept for comparison.");
     prm.leave_subsection();
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Fixed labels",

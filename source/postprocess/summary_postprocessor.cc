@@ -120,6 +120,12 @@ namespace RestShape
     summary.set("tangent", p.forward.discretization.tangent_name);
     summary.set("formulation",
                 p.forward.discretization.mixed ? "mixed" : "displacement");
+    if (p.forward.discretization.nodal_pressure)
+      summary.set("nodal_pressure_boundary",
+                  std::string(
+                    p.forward.discretization.boundary_shares_to_interior ?
+                      "interior" :
+                      "own"));
     if (!p.forward.discretization.formulation_note.empty())
       summary.set("formulation_note",
                   p.forward.discretization.formulation_note);

@@ -28,7 +28,7 @@ namespace RestShape
     /// Discretization/Nodal pressure at the boundary: whether a boundary
     /// vertex's share of each cell's volume goes to the cell's interior
     /// vertices (interior) or stays its own (own, Bonet and Burton).
-    bool boundary_shares_to_interior = false;
+    bool boundary_shares_to_interior = true;
     /// After resolve_formulation(): whether the volume change is the
     /// cell's mean dilatation or the vertices' (mixed) or the pointwise
     /// one.
