@@ -5,6 +5,12 @@
 #
 #   xvfb-run -a python3 doc/make_figures.py
 #
+# With the argument `in_vivo`, only doc/figures/brain_in_vivo.png, from
+# prm/brain_in_vivo.prm (doc/brain.md, section 8):
+#
+#   build/restshape prm/brain_in_vivo.prm
+#   xvfb-run -a python3 doc/make_figures.py in_vivo
+#
 # With the argument `scenarios`, only doc/figures/brain_scenarios.png, from
 # two scenarios of prm/brain.prm (doc/scenarios.md):
 #
@@ -84,8 +90,9 @@ def magnitude(grid, a, b=None):
 
 
 def colour_map(maximum, title):
+    """maximum: the top of the range from 0, or a (bottom, top) pair."""
     lut = vtk.vtkLookupTable()
-    lut.SetRange(0, maximum)
+    lut.SetRange(*(maximum if isinstance(maximum, tuple) else (0, maximum)))
     lut.SetHueRange(0.15, 0.67)
     lut.Build()
     bar = vtk.vtkScalarBarActor()
@@ -296,7 +303,42 @@ def csf(directory):
     print('wrote doc/figures/brain_csf.png')
 
 
+def in_vivo(directory):
+    """prm/brain_in_vivo.prm: the cells' pressure and volume change on an
+    axial section through the tumour (y = 29 mm, seen from above), and
+    the pre-stressed shift of Table 1's scenario."""
+    grid = read_vtu(vtus(directory)[0])
+    # Cell fields; each cell has points of its own (deal.II writes a patch
+    # per cell), so the point value is the cell's.
+    to_points = vtk.vtkCellDataToPointData()
+    to_points.SetInputData(grid)
+    to_points.Update()
+    fields = to_points.GetOutput().GetPointData()
+    pressure = vtk_to_numpy(fields.GetArray('pressure_Pa'))
+    change = 100 * (vtk_to_numpy(fields.GetArray('volume_ratio')) - 1)
+    scenario = read_vtu(os.path.join(directory, 'scenario.vtu'))
+    shift = magnitude(scenario, 'prestressed_shift_mm')
+    section = 29.0  # mm: through the tumour's centroid
+    above = dict(direction=(0, -1, 0), view_up=(0, 0, 1))
+    cut_p = cut(grid, 'target_position_mm', section, 'p', pressure)
+    cut_j = cut(grid, 'target_position_mm', section, 'j', change)
+    p = vtk_to_numpy(cut_p.GetPointData().GetArray('p'))
+    j = vtk_to_numpy(cut_j.GetPointData().GetArray('j'))
+    top = float(numpy.abs(j).max())
+    render_panels([('pressure, section y = %g mm: %.0f to %.0f Pa' % (section, p.min(), p.max()),
+                    cut_p, 'p', (float(p.min()), float(p.max())), 'Pa'),
+                   ('volume change J - 1 there: %.2f to %.2f %%' % (j.min(), j.max()),
+                    cut_j, 'j', (-top, top), '%'),
+                   ('Table 1 (0.1 g sideways): shift, max %.2f mm' % shift.max(),
+                    surface_at(scenario, None, 's', shift), 's', shift.max())],
+                  'doc/figures/brain_in_vivo.png', **above)
+    print('wrote doc/figures/brain_in_vivo.png')
+
+
 os.makedirs('doc/figures', exist_ok=True)
+if sys.argv[1:] == ['in_vivo']:
+    in_vivo('output/brain_in_vivo')
+    raise SystemExit(0)
 if sys.argv[1:] == ['csf']:
     csf('output/brain_shift_csf')
     raise SystemExit(0)
