@@ -185,6 +185,15 @@ namespace RestShape
     constraints_newton.merge(
       discretization_.base_constraints(),
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
+    // The averaged nodal pressure assembles each owned vertex's patch,
+    // which reaches DoFs of ghost cells: their contact constraints must
+    // be known here as on the rank that owns them.
+    if (contact != nullptr && parameters.discretization.nodal_pressure &&
+        Utilities::MPI::n_mpi_processes(discretization_.communicator()) > 1)
+      constraints_newton.make_consistent_in_parallel(
+        discretization_.locally_owned_dofs(),
+        discretization_.locally_relevant_dofs(),
+        discretization_.communicator());
     constraints_newton.close();
     return constraints_newton;
   }
