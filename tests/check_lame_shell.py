@@ -31,23 +31,35 @@ def closed_form(mu, bulk, a, b, p_i, p_o, k):
     return (r1 * m22 - m12 * r2) / det, (m11 * r2 - r1 * m21) / det
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("nodes")
+def add_shell_arguments(parser):
+    """The shell's options (material, loads, radii, label), shared with
+    check_pressure_field.py."""
     parser.add_argument("--E", type=float, required=True)
     parser.add_argument("--nu", type=float, required=True)
     parser.add_argument("--p-inner", type=float, required=True)
     parser.add_argument("--p-outer", type=float, default=0)
     parser.add_argument("--support", type=float, default=0)
     parser.add_argument("--radii", default="10,20")
-    parser.add_argument("--tolerance", type=float, default=1)
-    parser.add_argument("--cavity", default="0,1e300")
     parser.add_argument("--label", default="shell")
-    args = parser.parse_args()
+
+
+def shell_solution(args):
+    """(a, b, K, A, B) of the shell the options describe (SI)."""
     a, b = (float(x) * 1e-3 for x in args.radii.split(","))
     mu = args.E / (2 * (1 + args.nu))
     bulk = args.E / (3 * (1 - 2 * args.nu))
     A, B = closed_form(mu, bulk, a, b, args.p_inner, args.p_outer, args.support)
+    return a, b, bulk, A, B
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("nodes")
+    add_shell_arguments(parser)
+    parser.add_argument("--tolerance", type=float, default=1)
+    parser.add_argument("--cavity", default="0,1e300")
+    args = parser.parse_args()
+    a, b, _, A, B = shell_solution(args)
     errors, exact_sq, cavity, cavity_exact = [], [], [], []
     with open(args.nodes, newline="") as f:
         for row in csv.DictReader(f):

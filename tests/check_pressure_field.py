@@ -11,11 +11,12 @@ the mean it measures, relative to the exact pressure:
   share (a checkerboard makes it as large as the scatter or larger).
 
 Prints one line and fails (exit 1) if the mean is outside --mean (a range
-of ratios) or the scatter or the jump is above --scatter or --jump.
+of ratios), the scatter or the jump is above --scatter or --jump, or the
+cells' volume_ratio differs from 1 by more than --volume-change.
 
 usage: check_pressure_field.py RUN_DIRECTORY --E E --nu NU --p-inner P
        [--p-outer P] [--support K] [--radii A,B] [--mean LO,HI]
-       [--scatter S] [--jump S] [--label TEXT]"""
+       [--scatter S] [--jump S] [--volume-change D] [--label TEXT]"""
 import argparse
 import glob
 import os
@@ -26,7 +27,7 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_lame_shell import closed_form  # noqa: E402
+from check_lame_shell import add_shell_arguments, shell_solution  # noqa: E402
 
 TETRA_TYPES = (vtk.VTK_TETRA, vtk.VTK_QUADRATIC_TETRA, vtk.VTK_LAGRANGE_TETRAHEDRON)
 
@@ -58,25 +59,17 @@ def face_jumps(grid, pressure):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("run")
-    parser.add_argument("--E", type=float, required=True)
-    parser.add_argument("--nu", type=float, required=True)
-    parser.add_argument("--p-inner", type=float, required=True)
-    parser.add_argument("--p-outer", type=float, default=0)
-    parser.add_argument("--support", type=float, default=0)
-    parser.add_argument("--radii", default="10,20")
+    add_shell_arguments(parser)
     parser.add_argument("--mean", default="0.9,1.1")
     parser.add_argument("--scatter", type=float, default=0.5)
     parser.add_argument("--jump", type=float, default=0.5)
-    parser.add_argument("--label", default="shell")
+    parser.add_argument("--volume-change", type=float, default=float("inf"))
     args = parser.parse_args()
     files = sorted(glob.glob(os.path.join(args.run, "solution-*.vtu")))
     if not files:
         print(f"{args.label}: no solution-*.vtu in {args.run}")
         return 1
-    a, b = (float(x) * 1e-3 for x in args.radii.split(","))
-    mu = args.E / (2 * (1 + args.nu))
-    bulk = args.E / (3 * (1 - 2 * args.nu))
-    A, _ = closed_form(mu, bulk, a, b, args.p_inner, args.p_outer, args.support)
+    _, _, bulk, A, _ = shell_solution(args)
     exact = -3 * bulk * A
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(files[-1])
@@ -87,6 +80,8 @@ def main():
         print(f"{args.label}: {files[-1]} has no cell field pressure_Pa")
         return 1
     p = vtk_to_numpy(array).astype(float)
+    J = grid.GetCellData().GetArray("volume_ratio")
+    change = float(np.abs(vtk_to_numpy(J) - 1).max()) if J is not None else float("nan")
     ratio = p.mean() / exact
     scatter = np.sqrt(np.mean((p - exact) ** 2)) / abs(exact)
     jumps = face_jumps(grid, p)
@@ -98,12 +93,14 @@ def main():
         and scatter <= args.scatter
         and len(jumps) > 0
         and jump <= args.jump
+        and (args.volume_change == float("inf") or change <= args.volume_change)
     )
     print(
         f"{args.label}: pressure_Pa mean {p.mean():.4g} Pa, exact {exact:.4g} Pa, "
         f"ratio {ratio:.4f} (in [{lo}, {hi}]); scatter {scatter:.3f} (at most "
         f"{args.scatter}), jump across {len(jumps)} faces {jump:.3f} (at most "
-        f"{args.jump}) of the exact pressure: {'ok' if ok else 'FAIL'}"
+        f"{args.jump}) of the exact pressure; volume_ratio within {change:.3g} of 1 "
+        f"(at most {args.volume_change}): {'ok' if ok else 'FAIL'}"
     )
     return 0 if ok else 1
 

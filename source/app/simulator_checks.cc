@@ -186,12 +186,11 @@ namespace RestShape
     if (d.mixed)
       pcout << "Formulation: mixed, "
             << (!d.nodal_pressure ?
-                  "a pressure constant per cell (its mean dilatation)" :
-                d.boundary_shares_to_interior ?
-                  "the averaged nodal pressure of linear tetrahedra "
-                  "(boundary vertices: interior)" :
-                  "the averaged nodal pressure of linear tetrahedra "
-                  "(boundary vertices: own)")
+                  std::string(
+                    "a pressure constant per cell (its mean dilatation)") :
+                  std::string("the averaged nodal pressure of linear "
+                              "tetrahedra (boundary vertices: ") +
+                    (d.boundary_shares_to_interior ? "interior" : "own") + ")")
             << std::endl;
     if (!d.formulation_note.empty())
       pcout << "Note: " << d.formulation_note << std::endl;

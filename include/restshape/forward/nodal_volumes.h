@@ -40,7 +40,7 @@ namespace RestShape
     void
     reinit(const dealii::DoFHandler<3> &dof_handler,
            const BufferType            &like,
-           const bool                   boundary_to_interior = false);
+           const bool                   boundary_to_interior);
 
     /// Adds to @p dsp the couplings of every DoF of the cells around each
     /// locally owned vertex (the stiffness of its volume), under
@@ -135,9 +135,10 @@ namespace RestShape
       Label                                           label = 0;
       double orientation = 1; // sign of the mesh cell's volume
       bool   owned       = false;
-      // Each vertex's share of the cell's volume: 1 / (the cell's
-      // interior vertices) at an interior vertex, 0 at a boundary one; a
-      // quarter each where all four are on the boundary.
+      // Each vertex's share of the cell's volume: a quarter each (own, or
+      // all four vertices on the boundary); with boundary_to_interior,
+      // 1 / (the cell's interior vertices) at an interior vertex and 0
+      // at a boundary one.
       std::array<double, 4> share = {{0.25, 0.25, 0.25, 0.25}};
     };
     /// The vertex of @p cell whose x-DoF has the local index @p x.
