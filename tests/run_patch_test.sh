@@ -19,6 +19,7 @@ $python meshes/make_block.py "$out/tetrahedra.msh" 3 10 --distort 0.3 --tetrahed
 E=3000
 t=500
 status=0
+extra=() # further --set options of the next case
 # case NAME CELLS DEGREE FORMULATION LAW NU CHECK_LAW [LAUNCHER...]
 case_() {
   local name=$1 cells=$2 degree=$3 formulation=$4 law=$5 nu=$6 check=$7
@@ -29,7 +30,7 @@ case_() {
     --set "Discretization/Formulation=$formulation" --set "Materials/Material law=$law" \
     --set "Materials/Poisson's ratio=$nu" --set "Materials/Young's modulus=$E" \
     --set "Surface traction/Traction=$t, 0, 0" --set "Solver/Check stability=false" \
-    tests/data/patch_test.prm >"$dir.log" 2>&1
+    "${extra[@]}" tests/data/patch_test.prm >"$dir.log" 2>&1
   local code=$?
   echo "== $name: $cells, degree $degree, $formulation, $law, nu = $nu"
   if [ $code -ne 0 ]; then
@@ -45,18 +46,25 @@ for nu in 0.4999 0.49999; do
   case_ "p1_mixed_$nu" tetrahedra 1 mixed neo-Hookean $nu mixed-neo-Hookean
   case_ "p2_mixed_$nu" tetrahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
   case_ "q1_mixed_$nu" hexahedra 1 mixed neo-Hookean $nu mixed-neo-Hookean
+  # Q2: by default the linear pressure per cell (Q2-P1disc), then Q2-P0.
   case_ "q2_mixed_$nu" hexahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
+  extra=(--set "Discretization/Cell pressure=constant")
+  case_ "q2_p0_mixed_$nu" hexahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
+  extra=()
 done
 case_ p1_displacement tetrahedra 1 displacement neo-Hookean 0.3 neo-Hookean
 case_ q2_displacement hexahedra 2 displacement neo-Hookean 0.3 neo-Hookean
 for law in Ogden corotational; do
   case_ "p1_mixed_$law" tetrahedra 1 mixed $law 0.4999 none
   case_ "q1_mixed_$law" hexahedra 1 mixed $law 0.4999 none
+  case_ "q2_mixed_$law" hexahedra 2 mixed $law 0.4999 none
 done
 if [ -n "$mpiexec" ]; then
   case_ p1_mixed_2_ranks tetrahedra 1 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
     $mpiexec --allow-run-as-root --oversubscribe -np 2
   case_ q1_mixed_2_ranks hexahedra 1 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
+    $mpiexec --allow-run-as-root --oversubscribe -np 2
+  case_ q2_mixed_2_ranks hexahedra 2 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
     $mpiexec --allow-run-as-root --oversubscribe -np 2
 fi
 [ $status -eq 0 ] && echo "every element passed the patch test"

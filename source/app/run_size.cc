@@ -61,8 +61,8 @@ namespace RestShape
       cells_read *
       std::pow(children_per_cell, parameters.mesh.global_refinements) *
       std::pow(growth, cycles);
-    // The mean-dilatation mixed formulation adds no global DoF (its
-    // pressure is condensed per cell).
+    // The mixed formulations add no global DoF (their pressure is
+    // condensed per cell or per vertex).
     size.dofs  = size.cells * dofs_per_cell(parameters);
     size.bytes = size.cells * bytes_per_cell + size.dofs * bytes_per_dof;
     // Every rank holds the mesh as read before it keeps its own part.

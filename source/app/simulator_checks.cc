@@ -185,7 +185,10 @@ namespace RestShape
       pcout << "Warning: " << d.formulation_warning << std::endl;
     if (d.mixed)
       pcout << "Formulation: mixed, "
-            << (!d.nodal_pressure ?
+            << (d.linear_cell_pressure ?
+                  std::string("a pressure linear on each cell, "
+                              "discontinuous across cells (Q2-P1disc)") :
+                !d.nodal_pressure ?
                   std::string(
                     "a pressure constant per cell (its mean dilatation)") :
                   std::string("the averaged nodal pressure of linear "

@@ -53,7 +53,8 @@ namespace RestShape
       "bulk modulus) of a volume larger than a point, its pressure "
       "condensed: on quadratic tetrahedra and on hexahedra each cell's "
       "mean dilatation, the integral of J over the cell's rest volume (a "
-      "pressure constant per cell: P2-P0, Q1-P0, Q2-P0); on linear "
+      "pressure constant per cell: P2-P0, Q1-P0, Q2-P0; on Q2 hexahedra by "
+      "default a linear one, Q2-P1disc: see Cell pressure); on linear "
       "tetrahedra the averaged nodal pressure (Bonet and Burton 1998, as "
       "Joldes, Wittek and Miller use for brain shift): one volume ratio "
       "per vertex over the cells around it, each label's U(J) on its "
@@ -63,6 +64,20 @@ namespace RestShape
       "auto: mixed where some label's Poisson's "
       "ratio is 0.49 or above, else displacement (with a warning where "
       "displacement is chosen at 0.49 and above).");
+    prm.declare_entry(
+      "Cell pressure",
+      "auto",
+      Patterns::Selection("auto|constant|linear"),
+      "The pressure of the mixed formulation (Formulation = mixed) on "
+      "elements with a pressure per cell. constant: the cell's mean "
+      "dilatation (P2-P0, Q1-P0, Q2-P0). linear: on hexahedra of degree 2 "
+      "only, a dilatation and a pressure linear on each cell and "
+      "discontinuous across cells, condensed (Q2-P1disc, the element of "
+      "deal.II's step-44; Simo, Taylor and Pister 1985): its pressure "
+      "converges one order faster than the constant one. auto: linear on "
+      "Q2 hexahedra, constant on P2 tetrahedra (P2-P1disc is not stable "
+      "on tetrahedra) and Q1 hexahedra. Linear tetrahedra use the "
+      "averaged nodal pressure instead.");
     prm.declare_entry(
       "Nodal pressure at the boundary",
       "interior",
@@ -118,9 +133,10 @@ namespace RestShape
   DiscretizationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    degree           = prm.get_integer("Polynomial degree");
-    tangent_name     = prm.get("Tangent");
-    formulation_name = prm.get("Formulation");
+    degree             = prm.get_integer("Polynomial degree");
+    tangent_name       = prm.get("Tangent");
+    formulation_name   = prm.get("Formulation");
+    cell_pressure_name = prm.get("Cell pressure");
     boundary_shares_to_interior =
       prm.get("Nodal pressure at the boundary") == "interior";
     tangent = tangent_name == "warped"    ? TangentType::warped :
@@ -144,7 +160,17 @@ namespace RestShape
     const bool locking = max_nu >= nearly_incompressible;
     mixed =
       formulation_name == "mixed" || (formulation_name == "auto" && locking);
-    nodal_pressure = mixed && simplex && degree == 1;
+    nodal_pressure          = mixed && simplex && degree == 1;
+    const bool q2_hexahedra = !simplex && degree == 2;
+    if (cell_pressure_name == "linear" && !q2_hexahedra)
+      throw InputError(
+        "",
+        "Discretization/Cell pressure",
+        "a linear pressure per cell needs hexahedra of degree 2 (Q2-P1disc; "
+        "it is not stable on tetrahedra or Q1 hexahedra); expected constant "
+        "or auto");
+    linear_cell_pressure =
+      mixed && q2_hexahedra && cell_pressure_name != "constant";
     formulation_warning.clear();
     if (locking && !mixed)
       formulation_warning =

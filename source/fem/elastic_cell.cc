@@ -104,7 +104,7 @@ namespace RestShape
     , rhs(3 * n_scalar)
     , external(3 * n_scalar)
     , magnitude(3 * n_scalar)
-    , volume_gradient(3 * n_scalar)
+    , volume_gradient(max_pressure_modes * 3 * n_scalar)
   {
     AssertThrow(fe.n_base_elements() == 1 && fe.n_components() == 3 &&
                   fe.element_multiplicity(0) == 3,
@@ -134,13 +134,17 @@ namespace RestShape
   }
 
   void
-  ElasticCell::reinit(const bool sum_magnitudes)
+  ElasticCell::reinit(const bool sum_magnitudes, const unsigned int modes)
   {
+    AssertIndexRange(modes - 1, max_pressure_modes);
     magnitudes = sum_magnitudes;
+    n_modes    = modes;
     first      = true;
     std::fill(rhs.begin(), rhs.end(), 0.);
     std::fill(external.begin(), external.end(), 0.);
-    std::fill(volume_gradient.begin(), volume_gradient.end(), 0.);
+    std::fill(volume_gradient.begin(),
+              volume_gradient.begin() + n_modes * 3 * n_scalar,
+              0.);
     if (magnitudes)
       std::fill(magnitude.begin(), magnitude.end(), 0.);
   }
@@ -152,12 +156,17 @@ namespace RestShape
     if (p.A != nullptr)
       add_tangent(p);
     if (p.dJ != nullptr)
-      for (unsigned int c = 0; c < 3; ++c)
-        for (unsigned int k = 0; k < n_scalar; ++k)
-          volume_gradient[c * n_scalar + k] +=
-            p.dV_rest *
-            ((*p.dJ)[c][0] * b[k] + (*p.dJ)[c][1] * b[n_scalar + k] +
-             (*p.dJ)[c][2] * b[2 * n_scalar + k]);
+      for (unsigned int a = 0; a < n_modes; ++a)
+        {
+          const double weight = p.modes == nullptr ? 1. : p.modes[a];
+          double      *g      = &volume_gradient[a * 3 * n_scalar];
+          for (unsigned int c = 0; c < 3; ++c)
+            for (unsigned int k = 0; k < n_scalar; ++k)
+              g[c * n_scalar + k] +=
+                weight * p.dV_rest *
+                ((*p.dJ)[c][0] * b[k] + (*p.dJ)[c][1] * b[n_scalar + k] +
+                 (*p.dJ)[c][2] * b[2 * n_scalar + k]);
+        }
     first = false;
   }
 
@@ -172,11 +181,33 @@ namespace RestShape
   }
 
   void
-  ElasticCell::volume_gradient_in_dof_order(std::vector<double> &g) const
+  ElasticCell::add_volumetric_stiffness(FullMatrix<double>       &M,
+                                        const FullMatrix<double> &K) const
+  {
+    const unsigned int n = index.size();
+    // t_r = sum_a G_a[r] K_ab, then M_rs += sum_b t_r[b] G_b[s].
+    std::vector<double> t(n * n_modes, 0.);
+    for (unsigned int r = 0; r < n; ++r)
+      for (unsigned int a = 0; a < n_modes; ++a)
+        for (unsigned int b = 0; b < n_modes; ++b)
+          t[r * n_modes + b] += volume_gradient[a * n + r] * K(a, b);
+    for (unsigned int r = 0; r < n; ++r)
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          double sum = 0;
+          for (unsigned int b = 0; b < n_modes; ++b)
+            sum += t[r * n_modes + b] * volume_gradient[b * n + s];
+          M(index[r], index[s]) += sum;
+        }
+  }
+
+  void
+  ElasticCell::volume_gradient_in_dof_order(std::vector<double> &g,
+                                            const unsigned int   mode) const
   {
     g.resize(index.size());
     for (unsigned int r = 0; r < index.size(); ++r)
-      g[index[r]] = volume_gradient[r];
+      g[index[r]] = volume_gradient[mode * index.size() + r];
   }
 
   void

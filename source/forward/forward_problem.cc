@@ -80,10 +80,13 @@ namespace RestShape
       {
         const unsigned int n_cells =
           discretization_.dof_handler().get_triangulation().n_active_cells();
+        const unsigned int modes =
+          parameters.discretization.cell_pressure_modes();
         pressure_prediction.reset(n_cells,
-                                  discretization_.fe().n_dofs_per_cell());
+                                  discretization_.fe().n_dofs_per_cell(),
+                                  modes);
         if (!parameters.discretization.nodal_pressure)
-          cell_pressures.reset(n_cells);
+          cell_pressures.reset(n_cells * modes);
       }
     SparsityTools::distribute_sparsity_pattern(
       dsp,

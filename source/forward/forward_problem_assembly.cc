@@ -8,6 +8,7 @@
 
 #include <restshape/fem/elastic_cell.h>
 #include <restshape/fem/simplex_values.h>
+#include <restshape/forward/cell_pressure_modes.h>
 #include <restshape/forward/forward_problem.h>
 
 namespace RestShape
@@ -33,6 +34,8 @@ namespace RestShape
       , F(quadrature.size())
       , G_inv(quadrature.size())
       , det_G(quadrature.size())
+      , J(quadrature.size())
+      , dV_rest(quadrature.size())
       , d_cell(fe)
       , w_cell(fe)
       , faces(mapping, fe, face_quadrature)
@@ -55,13 +58,15 @@ namespace RestShape
 
     FEValues<3>                    fe_values; // of the scalar base element
     std::vector<Tensor2>           grad_d, grad_w;
-    std::vector<Tensor2>           F, G_inv; // per point: F, (dX_rest/dX)^-1
-    std::vector<double>            det_G;    // per point: dV_rest / dV
+    std::vector<Tensor2>           F, G_inv;   // per point: F, (dX_rest/dX)^-1
+    std::vector<double>            det_G;      // per point: dV_rest / dV
+    std::vector<double>            J, dV_rest; // per point (linear pressure)
     LocalField                     d_cell, w_cell; // d and w on the cell
     FaceScratch                    faces;          // of the load terms
     ElasticCell                    elastic;        // the law's terms
     std::unique_ptr<SimplexValues> simplex;        // on affine tetrahedra
-    std::vector<double>            g_local;        // PressurePrediction's
+    std::vector<double>            g_local, g_all; // PressurePrediction's
+    CellPressureModes              modes; // Q2-P1disc: the linear pressure
   };
 
   struct ForwardProblem::CopyData
@@ -117,25 +122,32 @@ namespace RestShape
     Tensor<1, 3>  cell_body_force;
     const Tensor2 I = unit_symmetric_tensor<3>();
 
-    ElasticCell &elastic = scratch.elastic;
-    elastic.reinit(magnitudes);
-    Tensor4 A;
-    double  W   = 0;
-    copy.energy = 0;
     // The law's terms at the points of @p values (of the scalar element,
     // on this cell); false at an inverted point. Mixed formulation: the
     // isochoric part of the law at each point and the volumetric energy
     // V U(J_mean) of the cell's mean dilatation J_mean = int J dV_rest / V
     // (a condensed pressure U'(J_mean) constant on the cell), its
-    // stiffness U''(J_mean) / V g g^T added below.
-    const bool mixed              = parameters.discretization.mixed;
-    const bool nodal              = parameters.discretization.nodal_pressure;
-    double     volumetric_factor  = 0;
-    double     condensed_pressure = 0; // U'(J_mean) of a cell's pressure
-    double     nodal_predicted    = 0; // the vertices' predicted pressure
-    const bool shifted            = cell_pressures.shifted();
-    const bool predicted          = matrix && mixed && !nodal && !shifted;
-    const auto add_points         = [&](const auto &values) {
+    // stiffness U''(J_mean) / V g g^T added below; with a linear pressure
+    // per cell (Q2-P1disc) the same by the cell's modes (CellPressureModes).
+    const bool   mixed   = parameters.discretization.mixed;
+    const bool   nodal   = parameters.discretization.nodal_pressure;
+    const bool   linear  = parameters.discretization.linear_cell_pressure;
+    const auto   n_modes = parameters.discretization.cell_pressure_modes();
+    ElasticCell &elastic = scratch.elastic;
+    elastic.reinit(magnitudes, mixed && !nodal ? n_modes : 1);
+    Tensor4 A;
+    double  W                            = 0;
+    copy.energy                          = 0;
+    CellPressureModes &modes             = scratch.modes;
+    double             volumetric_factor = 0;
+    // The pressure per mode (with one mode: U'(J_mean)) before a caller's
+    // offsets, with them (the residual's), and the tangent's.
+    std::array<double, CellPressureModes::n_modes> condensed{}, pressure{},
+      geometric{};
+    double     nodal_predicted = 0; // the vertices' predicted pressure
+    const bool shifted         = cell_pressures.shifted();
+    const bool predicted       = matrix && mixed && !nodal && !shifted;
+    const auto add_points      = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
       const unsigned int n = values.n_quadrature_points;
@@ -156,9 +168,10 @@ namespace RestShape
                 return false;
               V += scratch.det_G[q] * values.JxW(q);
               J_volume += J * scratch.det_G[q] * values.JxW(q);
+              scratch.J[q]       = J;
+              scratch.dV_rest[q] = scratch.det_G[q] * values.JxW(q);
             }
         }
-      MaterialLaw::Volumetric U;
       if (mixed && nodal)
         {
           // Averaged nodal pressure: the vertices' stiffness is added
@@ -167,29 +180,48 @@ namespace RestShape
             nodal_volumes.cell(copy.cell_index, material_table, V);
           if (!c.valid)
             return false;
-          U.dU            = c.pressure;
+          pressure[0]     = c.pressure;
           nodal_predicted = c.predicted;
           copy.energy += c.energy;
         }
+      else if (mixed && linear)
+        {
+          modes.reinit(values);
+          if (!modes.condense(law, scratch.J, scratch.dV_rest))
+            return false;
+          copy.energy += modes.energy;
+          for (unsigned int a = 0; a < n_modes; ++a)
+            {
+              const unsigned int point = copy.cell_index * n_modes + a;
+              condensed[a]             = modes.pressure[a];
+              cell_pressures.record(point,
+                                    {modes.dilatation[a],
+                                     modes.pressure[a],
+                                     modes.mode_stiffness[a]});
+              pressure[a] = cell_pressures.pressure(point, condensed[a]);
+            }
+        }
       else if (mixed)
         {
-          U                  = law.volumetric(J_volume / V);
-          volumetric_factor  = U.d2U / V;
-          condensed_pressure = U.dU;
+          const MaterialLaw::Volumetric U = law.volumetric(J_volume / V);
+          volumetric_factor               = U.d2U / V;
+          condensed[0]                    = U.dU;
           copy.energy += V * U.U;
           cell_pressures.record(copy.cell_index, {J_volume / V, U.dU, U.d2U});
           // A caller's three-field pressure (CellPressures).
-          U.dU = cell_pressures.pressure(copy.cell_index, U.dU);
+          pressure[0] = cell_pressures.pressure(copy.cell_index, U.dU);
         }
       // The tangent's geometric term: the pressure the three-field step
       // predicts (PressurePrediction), the residual's is U'(J_mean).
-      const double geometric_pressure =
-        predicted ? pressure_prediction.pressure(copy.cell_index,
-                                                 scratch.d_cell.data(),
-                                                 scratch.w_cell.data(),
-                                                 U.dU) :
-                (matrix && nodal) ? nodal_predicted :
-                                    U.dU;
+      geometric = pressure;
+      if (predicted)
+        pressure_prediction.pressure(copy.cell_index,
+                                     scratch.d_cell.data(),
+                                     scratch.w_cell.data(),
+                                     pressure.data(),
+                                     geometric.data());
+      else if (matrix && nodal)
+        geometric[0] = nodal_predicted;
       for (unsigned int q = 0; q < n; ++q)
         {
           const Tensor2     &F = scratch.F[q];
@@ -197,14 +229,19 @@ namespace RestShape
           Tensor2            dJ;
           if (!(mixed ? law.evaluate_isochoric(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W) :
-                                law.evaluate(
+                             law.evaluate(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W)))
             return false;
           if (mixed)
             {
               const Tensor2 F_inv_T = transpose(invert(F));
               dJ                    = determinant(F) * F_inv_T;
-              p.P += U.dU * dJ;
+              p.modes               = linear ? modes.at(q) : nullptr;
+              p.P +=
+                (linear ? modes.field_at(q, pressure.data()) : pressure[0]) *
+                dJ;
+              const double geometric_pressure =
+                linear ? modes.field_at(q, geometric.data()) : geometric[0];
               if (matrix)
                 for (unsigned int i = 0; i < 3; ++i)
                   for (unsigned int j = 0; j < 3; ++j)
@@ -223,7 +260,7 @@ namespace RestShape
           p.f_body  = varies ? load_set.body_force(*cell,
                                                   values.quadrature_point(q),
                                                   current_load) :
-                                       cell_body_force;
+                                    cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
@@ -254,22 +291,22 @@ namespace RestShape
         return;
       }
     elastic.vectors(copy.cell_rhs, copy.cell_external, copy.cell_magnitude);
-    if (matrix)
+    if (matrix && mixed && !nodal)
       {
         elastic.matrix(copy.cell_matrix);
-        if (mixed && !nodal)
+        if (linear)
+          elastic.add_volumetric_stiffness(copy.cell_matrix, modes.stiffness);
+        else
           elastic.add_volumetric_stiffness(copy.cell_matrix, volumetric_factor);
         if (predicted)
-          {
-            elastic.volume_gradient_in_dof_order(scratch.g_local);
-            pressure_prediction.record(copy.cell_index,
-                                       scratch.d_cell.data(),
-                                       scratch.w_cell.data(),
-                                       condensed_pressure,
-                                       volumetric_factor,
-                                       scratch.g_local);
-          }
+          record_pressure_linearisation(scratch,
+                                        copy.cell_index,
+                                        condensed.data(),
+                                        linear ? &modes.stiffness(0, 0) :
+                                                 &volumetric_factor);
       }
+    else if (matrix)
+      elastic.matrix(copy.cell_matrix);
 
     load_set.assemble_faces({cell,
                              scratch.d_cell,
@@ -281,6 +318,31 @@ namespace RestShape
                              copy.cell_rhs,
                              copy.cell_external,
                              copy.energy});
+  }
+
+  void
+  ForwardProblem::record_pressure_linearisation(ScratchData       &scratch,
+                                                const unsigned int cell,
+                                                const double      *pressures,
+                                                const double *derivatives) const
+  {
+    const unsigned int n_modes =
+      parameters.discretization.cell_pressure_modes();
+    std::vector<double> &g_all = scratch.g_all;
+    g_all.clear();
+    for (unsigned int a = 0; a < n_modes; ++a)
+      {
+        scratch.elastic.volume_gradient_in_dof_order(scratch.g_local, a);
+        g_all.insert(g_all.end(),
+                     scratch.g_local.begin(),
+                     scratch.g_local.end());
+      }
+    pressure_prediction.record(cell,
+                               scratch.d_cell.data(),
+                               scratch.w_cell.data(),
+                               pressures,
+                               derivatives,
+                               g_all);
   }
 
   ForwardProblem::ScratchData &

@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <restshape/forward/cell_pressure_modes.h>
 #include <restshape/forward/forward_results.h>
 
 namespace RestShape
@@ -152,17 +153,23 @@ namespace RestShape
     const Tensor2 I     = unit_symmetric_tensor<3>();
     const bool    mixed = forward.scene_parameters().discretization.mixed;
     const bool nodal = forward.scene_parameters().discretization.nodal_pressure;
+    const bool linear =
+      forward.scene_parameters().discretization.linear_cell_pressure;
     if (nodal)
       forward.update_nodal_volumes();
+    CellPressureModes   modes; // Q2-P1disc: the cell's mean pressure
+    std::vector<double> J, dV_rest;
     for_each_owned_cell_gradients(
       forward,
-      update_JxW_values,
+      update_JxW_values | update_quadrature_points,
       [&](const auto &cell,
           const auto &fe_values,
           const auto &grad_d,
           const auto &grad_w) {
         const MaterialLaw &law  = forward.materials().law(cell->material_id());
         double             rest = 0, current = 0, pressure = 0;
+        J.clear();
+        dV_rest.clear();
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const Tensor2 G  = I + grad_w[q];
@@ -171,14 +178,26 @@ namespace RestShape
             Tensor2       P;
             rest += dV;
             current += determinant(F) * dV;
+            J.push_back(determinant(F));
+            dV_rest.push_back(dV);
             if (!mixed && law.evaluate(F, P, nullptr, TangentType::warped))
               pressure -= trace(cauchy_stress(F, P)) / 3 * dV;
           }
         const unsigned int i   = cell->active_cell_index();
         result.volume_ratio[i] = current / rest;
-        result.pressure[i]     = nodal ? forward.nodal_cell_pressure(i) :
-                                 mixed ? -law.volumetric(current / rest).dU :
-                                         pressure / rest;
+        // (A state the assembly accepted has J~ > 0 at every point.)
+        bool projected = false;
+        if (linear)
+          {
+            modes.reinit(fe_values);
+            projected = modes.condense(law, J, dV_rest);
+          }
+        if (projected)
+          result.pressure[i] = -modes.mean(modes.pressure.data());
+        else
+          result.pressure[i] = nodal ? forward.nodal_cell_pressure(i) :
+                               mixed ? -law.volumetric(current / rest).dU :
+                                       pressure / rest;
       });
     return result;
   }

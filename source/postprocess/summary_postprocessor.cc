@@ -120,6 +120,12 @@ namespace RestShape
     summary.set("tangent", p.forward.discretization.tangent_name);
     summary.set("formulation",
                 p.forward.discretization.mixed ? "mixed" : "displacement");
+    if (p.forward.discretization.mixed &&
+        !p.forward.discretization.nodal_pressure)
+      summary.set("cell_pressure",
+                  std::string(p.forward.discretization.linear_cell_pressure ?
+                                "linear" :
+                                "constant"));
     if (p.forward.discretization.nodal_pressure)
       summary.set("nodal_pressure_boundary",
                   std::string(

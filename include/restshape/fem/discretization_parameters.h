@@ -25,6 +25,8 @@ namespace RestShape
     std::vector<FixedPlane> fixed_planes;
     /// Discretization/Formulation as written (auto|displacement|mixed).
     std::string formulation_name = "auto";
+    /// Discretization/Cell pressure as written (auto|constant|linear).
+    std::string cell_pressure_name = "auto";
     /// Discretization/Nodal pressure at the boundary: whether a boundary
     /// vertex's share of each cell's volume goes to the cell's interior
     /// vertices (interior) or stays its own (own, Bonet and Burton).
@@ -36,6 +38,15 @@ namespace RestShape
     /// After resolve_formulation(): mixed on linear tetrahedra, the
     /// averaged nodal pressure (NodalVolumes).
     bool nodal_pressure = false;
+    /// After resolve_formulation(): mixed on Q2 hexahedra with a linear
+    /// pressure per cell (Q2-P1disc, CellPressureModes).
+    bool linear_cell_pressure = false;
+    /// The pressure modes per cell of the mixed formulation (1: constant).
+    unsigned int
+    cell_pressure_modes() const
+    {
+      return linear_cell_pressure ? 4 : 1;
+    }
     /// After resolve_formulation(): what the run says about the choice
     /// (empty: nothing to say).
     std::string formulation_warning;
@@ -45,7 +56,9 @@ namespace RestShape
 
     /// Resolve Formulation = auto (mixed where @p max_poissons_ratio is
     /// nearly_incompressible or above and the element has a mixed form)
-    /// and check an explicit choice; @p simplex: tetrahedra.
+    /// and check an explicit choice; @p simplex: tetrahedra. Throws an
+    /// InputError (without the file) for a linear cell pressure on an
+    /// element that has none.
     void
     resolve_formulation(const double max_poissons_ratio, const bool simplex);
     /// From this Poisson's ratio on, displacement elements lock.

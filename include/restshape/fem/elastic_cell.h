@@ -40,11 +40,17 @@ namespace RestShape
       /// against the shape functions is the gradient of the cell's volume
       /// (null: displacement formulation).
       const dealii::Tensor<2, 3> *dJ = nullptr;
+      /// With dJ: the values at the point of the cell's pressure modes
+      /// (reinit()'s number of them; null: one mode, the constant 1).
+      const double *modes = nullptr;
     };
 
-    /// Start a cell; @p magnitudes: also sum |f_ext| + |f_int|.
+    /// Start a cell; @p magnitudes: also sum |f_ext| + |f_int|; @p
+    /// pressure_modes: how many volume gradients to sum (mixed formulation,
+    /// at most max_pressure_modes).
     void
-    reinit(const bool magnitudes);
+    reinit(const bool magnitudes, const unsigned int pressure_modes);
+    static constexpr unsigned int max_pressure_modes = 4;
 
     /// Add the point @p p, @p values being of the scalar element (an
     /// FEValues or a SimplexValues).
@@ -83,11 +89,19 @@ namespace RestShape
     void
     add_volumetric_stiffness(dealii::FullMatrix<double> &matrix,
                              const double                factor) const;
-
-    /// The volume gradient g = dv/dd of the points added (mixed
-    /// formulation), in the cell's local DoF order (m^2).
+    /// With several pressure modes: add sum_ab @p stiffness_ab G_a G_b^T,
+    /// G_a the integral of dJ against the shape functions weighted by the
+    /// mode N_a.
     void
-    volume_gradient_in_dof_order(std::vector<double> &g) const;
+    add_volumetric_stiffness(dealii::FullMatrix<double>       &matrix,
+                             const dealii::FullMatrix<double> &stiffness) const;
+
+    /// The volume gradient G_@p mode of the points added (mixed
+    /// formulation; mode 0 with Point::modes null: g = dv/dd), in the
+    /// cell's local DoF order (m^2).
+    void
+    volume_gradient_in_dof_order(std::vector<double> &g,
+                                 const unsigned int   mode) const;
 
   private:
     /// The point's terms, with b and phi set.
@@ -118,8 +132,10 @@ namespace RestShape
     std::vector<std::pair<unsigned int, unsigned int>> copies;
     /// By (component c, scalar k), c * n_scalar + k.
     std::vector<double> rhs, external, magnitude;
-    /// By (component c, scalar k): the integral of dJ (Point::dJ).
+    /// By (mode a, component c, scalar k), a 3 n_scalar + c n_scalar + k:
+    /// the integral of dJ (Point::dJ) weighted by the mode.
     std::vector<double> volume_gradient;
+    unsigned int        n_modes = 1;
   };
 } // namespace RestShape
 

@@ -349,6 +349,14 @@ namespace RestShape
       ScratchData                                                &scratch,
       CopyData                                                   &copy,
       const Assemble                                              what) const;
+    /// Record the cell's pressure linearisation (PressurePrediction) from
+    /// the volume gradients in @p scratch's ElasticCell: the condensed
+    /// pressures of its modes and their derivatives (m x m).
+    void
+    record_pressure_linearisation(ScratchData       &scratch,
+                                  const unsigned int cell,
+                                  const double      *pressures,
+                                  const double      *derivatives) const;
 
     const ForwardParameters    &parameters;
     Discretization              discretization_;

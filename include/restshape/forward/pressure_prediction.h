@@ -21,14 +21,18 @@ namespace RestShape
   class PressurePrediction
   {
   public:
-    /// Forget every cell: @p n_cells active cells of @p n_dofs DoFs each.
+    /// Forget every cell: @p n_cells active cells of @p n_dofs DoFs each,
+    /// @p n_modes pressure modes per cell (1: a constant pressure).
     void
-    reset(const unsigned int n_cells, const unsigned int n_dofs)
+    reset(const unsigned int n_cells,
+          const unsigned int n_dofs,
+          const unsigned int n_modes)
     {
       n = n_dofs;
-      pressure0.assign(n_cells, 0.);
-      stiffness.assign(n_cells, 0.);
-      gradient.assign(std::size_t(n_cells) * n, 0.);
+      m = n_modes;
+      pressure0.assign(std::size_t(n_cells) * m, 0.);
+      stiffness.assign(std::size_t(n_cells) * m * m, 0.);
+      gradient.assign(std::size_t(n_cells) * m * n, 0.);
       d0.assign(std::size_t(n_cells) * n, 0.);
       w0.assign(std::size_t(n_cells) * n, 0.);
       known.assign(n_cells, 0);
@@ -42,37 +46,48 @@ namespace RestShape
       std::fill(known.begin(), known.end(), 0);
     }
 
-    /// The pressure the tangent of @p cell uses at its local coefficients
-    /// @p d and @p w (n_dofs each): the linearisation recorded at the same
-    /// rest shape @p w, else @p condensed (U'(J_mean) of this state).
-    double
+    /// The pressures (one per mode) the tangent of @p cell uses at its
+    /// local coefficients @p d and @p w (n_dofs each), into @p out: the
+    /// linearisation recorded at the same rest shape @p w, else @p
+    /// condensed (U'(J_mean) of this state, or the modes' projection).
+    void
     pressure(const unsigned int cell,
              const double      *d,
              const double      *w,
-             const double       condensed) const
+             const double      *condensed,
+             double            *out) const
     {
+      std::copy(condensed, condensed + m, out);
       if (cell >= known.size() || !known[cell])
-        return condensed;
-      const std::size_t at     = std::size_t(cell) * n;
-      double            change = 0;
+        return;
+      const std::size_t at = std::size_t(cell) * n;
       for (unsigned int i = 0; i < n; ++i)
+        if (w[i] != w0[at + i])
+          return;
+      for (unsigned int a = 0; a < m; ++a)
+        out[a] = pressure0[std::size_t(cell) * m + a];
+      for (unsigned int b = 0; b < m; ++b)
         {
-          if (w[i] != w0[at + i])
-            return condensed;
-          change += gradient[at + i] * (d[i] - d0[at + i]);
+          const double *g      = &gradient[(std::size_t(cell) * m + b) * n];
+          double        change = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            change += g[i] * (d[i] - d0[at + i]);
+          for (unsigned int a = 0; a < m; ++a)
+            out[a] += stiffness[(std::size_t(cell) * m + a) * m + b] * change;
         }
-      return pressure0[cell] + stiffness[cell] * change;
     }
 
     /// Record the linearisation of @p cell at a tangent's state: its
-    /// coefficients, the condensed pressure U'(J_mean) (Pa), U''/V
-    /// (Pa/m^3) and the volume gradient g = dv/dd (m^2) in local DoF order.
+    /// coefficients, the condensed pressures (Pa, one per mode), their
+    /// derivatives in the modes' volumes (m x m, row-major; with one mode
+    /// U''/V, Pa/m^3) and the volume gradients (m^2) in local DoF order,
+    /// mode after mode.
     void
     record(const unsigned int         cell,
            const double              *d,
            const double              *w,
-           const double               pressure,
-           const double               d2U_over_V,
+           const double              *pressures,
+           const double              *derivatives,
            const std::vector<double> &g)
     {
       if (cell >= known.size())
@@ -80,17 +95,21 @@ namespace RestShape
       const std::size_t at = std::size_t(cell) * n;
       for (unsigned int i = 0; i < n; ++i)
         {
-          d0[at + i]       = d[i];
-          w0[at + i]       = w[i];
-          gradient[at + i] = g[i];
+          d0[at + i] = d[i];
+          w0[at + i] = w[i];
         }
-      pressure0[cell] = pressure;
-      stiffness[cell] = d2U_over_V;
-      known[cell]     = 1;
+      std::copy(g.begin(),
+                g.begin() + std::size_t(m) * n,
+                gradient.begin() + std::size_t(cell) * m * n);
+      std::copy(pressures, pressures + m, pressure0.begin() + cell * m);
+      std::copy(derivatives,
+                derivatives + m * m,
+                stiffness.begin() + std::size_t(cell) * m * m);
+      known[cell] = 1;
     }
 
   private:
-    unsigned int        n = 0;
+    unsigned int        n = 0, m = 1;
     std::vector<double> pressure0, stiffness, gradient, d0, w0;
     std::vector<char>   known;
   };

@@ -171,7 +171,7 @@ namespace
     plain_loop(fe, fe_values, points, expected);
 
     ElasticCell cell(fe);
-    cell.reinit(true);
+    cell.reinit(true, 1);
     for (const ElasticCell::Point &p : points)
       cell.add(fe_values, p);
     cell.vectors(kernel.rhs, kernel.external, kernel.magnitude);
@@ -199,7 +199,7 @@ namespace
                 -1e-12);
 
     // Without the tangent (a residual-only assembly).
-    cell.reinit(false);
+    cell.reinit(false, 1);
     for (ElasticCell::Point p : points)
       {
         p.A = nullptr;

@@ -8,7 +8,9 @@
 // residual along a smooth v; and the residual is the derivative of the
 // energy (central differences along v). Linear tetrahedra also with
 // Discretization/Nodal pressure at the boundary = interior (boundary
-// vertices give their shares of the cells' volumes to interior ones).
+// vertices give their shares of the cells' volumes to interior ones);
+// quadratic hexahedra with both pressures per cell, linear (Q2-P1disc, the
+// default) and constant (Q2-P0).
 #include <deal.II/base/mpi.h>
 
 #include <restshape/base/mpi_start.h>
@@ -27,17 +29,15 @@ namespace
   prm_text(const std::string &cell_type,
            const unsigned int degree,
            const std::string &law,
-           const std::string &boundary)
+           const std::string &option)
   {
     return "subsection Mesh\n set File = meshes/cantilever_tet.msh\n"
            " set Length unit = mm\n set Cell type = " +
            cell_type +
            "\nend\n"
            "subsection Discretization\n set Polynomial degree = " +
-           std::to_string(degree) +
-           "\n set Formulation = mixed\n"
-           " set Nodal pressure at the boundary = " +
-           boundary +
+           std::to_string(degree) + "\n set Formulation = mixed\n set " +
+           option +
            "\nend\n"
            "subsection Materials\n set Young's modulus = 100000\n"
            " set Poisson's ratio = 0.4999\n set Density = 1000\n"
@@ -65,21 +65,23 @@ namespace
     return s.forward->discretization().interpolate_vertex_field(values);
   }
 
+  const std::string own = "Nodal pressure at the boundary = own";
+
   void
   check(const std::string &cell_type,
         const unsigned int degree,
         const std::string &law,
-        const std::string &boundary = "own")
+        const std::string &option = own)
   {
-    Scene             s(prm_text(cell_type, degree, law, boundary));
+    Scene             s(prm_text(cell_type, degree, law, option));
     ForwardProblem   &f    = *s.forward;
     const LoadState   load = f.loads().scene_load();
     const VectorType  w    = f.discretization().zero_vector();
     const VectorType  d    = field(s, 0.5, 0.05);
     const VectorType  v    = field(s, 0.3, -0.2);
-    const std::string name =
-      cell_type + " P" + std::to_string(degree) + " " + law +
-      (boundary == "own" ? "" : " (boundary " + boundary + ")") + ": ";
+    const std::string name = cell_type + " P" + std::to_string(degree) + " " +
+                             law + (option == own ? "" : " (" + option + ")") +
+                             ": ";
     constexpr double h           = 1e-7;
     const auto       residual_at = [&](const double t, double *energy) {
       VectorType x = d;
@@ -131,10 +133,12 @@ main(int argc, char **argv)
   for (const std::string law : {"neo-Hookean", "corotational", "Ogden"})
     {
       check("tetrahedra", 1, law);
-      check("tetrahedra", 1, law, "interior");
+      check("tetrahedra", 1, law, "Nodal pressure at the boundary = interior");
       check("tetrahedra", 2, law);
       check("hexahedra", 1, law);
     }
-  check("hexahedra", 2, "neo-Hookean");
+  check("hexahedra", 2, "neo-Hookean", "Cell pressure = linear");
+  check("hexahedra", 2, "Ogden", "Cell pressure = linear");
+  check("hexahedra", 2, "neo-Hookean", "Cell pressure = constant");
   return exit_code();
 }
