@@ -3,9 +3,9 @@
 # (0.4977), every element with both formulations, on the Lame shell
 # (tests/data/lame_shell.prm: radii 10 and 20 mm, 1 Pa in the cavity, an
 # elastic support outside; the closed form u(r) = A r + B / r^2 gives the
-# exact error, tests/check_lame_shell.py). Meshes from meshes/make_shell.py
-# at several cell sizes; hexahedra split each tetrahedron into four
-# (Mesh/Cell type = hexahedra). Each run is a whole forward solve, set-up
+# exact error, tests/check_lame_shell.py). Tetrahedra from
+# meshes/make_shell.py, hexahedra from meshes/make_shell_hex.py (a cubed
+# sphere), at several cell sizes. Q2 mixed is Q2-P1disc (the default). Each run is a whole forward solve, set-up
 # included, VTU and the stability check off. On this shell (no fixed label)
 # `Linear solver = auto` takes the direct solver. Writes $OUT/mixed_time_vs_error.csv (element,
 # formulation, cell size, cells, DoFs, seconds, RMS error %, error x DoFs,
@@ -16,15 +16,15 @@
 #   tests); fails unless the mixed element's error is below a third of the
 #   locking displacement element's.
 # Environment: RESTSHAPE (build/restshape), OUT (output/benchmarks/mixed_time_vs_error),
-# NU (0.4977), SIZES_P1 (4 2.8 2 1.6), SIZES_P2 (4 2.8 2), SIZES_Q1 (6 4 2.8),
-# SIZES_Q2 (6).
+# NU (0.4977), SIZES_P1 (4 2.8 2 1.6), SIZES_P2 (4 2.8 2), SIZES_Q1 (4 2.8 2),
+# SIZES_Q2 (4 2.8 2).
 set -u
 exe=${RESTSHAPE:-build/restshape}
 out=${OUT:-output/benchmarks/mixed_time_vs_error}
 nu=${NU:-0.4977}
 here=$(cd "$(dirname "$0")" && pwd)
 declare -A sizes=([P1]=${SIZES_P1:-4 2.8 2 1.6} [P2]=${SIZES_P2:-4 2.8 2}
-                  [Q1]=${SIZES_Q1:-6 4 2.8} [Q2]=${SIZES_Q2:-6})
+                  [Q1]=${SIZES_Q1:-4 2.8 2} [Q2]=${SIZES_Q2:-4 2.8 2})
 elements="P1 P2 Q1 Q2"
 if [ "${1:-}" = --coarse ]; then
   sizes=([P1]=4)
@@ -40,13 +40,13 @@ start_table "$csv" element,formulation,cell_size_mm,n_cells,n_dofs,seconds,rms_e
 status=0
 for element in $elements; do
   case $element in
-  P*) cells=tetrahedra ;;
-  Q*) cells=hexahedra ;;
+  P*) cells=tetrahedra generator=meshes/make_shell.py ;;
+  Q*) cells=hexahedra generator=meshes/make_shell_hex.py ;;
   esac
   degree=${element:1:1}
   for h in ${sizes[$element]}; do
-    mesh=$out/shell_$h.msh
-    [ -f "$mesh" ] || /usr/bin/python3 meshes/make_shell.py "$mesh" 10 20 2 "$h"
+    mesh=$out/shell_${cells}_$h.msh
+    [ -f "$mesh" ] || /usr/bin/python3 "$generator" "$mesh" 10 20 2 "$h"
     for formulation in displacement mixed; do
       dir=$out/${element}_${formulation}_$h
       rm -rf "$dir"

@@ -59,9 +59,13 @@ namespace RestShape
                       "mesh (the displacement as Newton's initial guess at "
                       "the full load, and for an inverse run the rest shape "
                       "as its first iterate); if Newton fails from there, the "
-                      "cycle starts again from the unloaded mesh. false: every "
+                      "cycle starts again from the unloaded mesh, and a "
+                      "direct inverse again from the target. false: every "
                       "cycle starts from the unloaded mesh (and an inverse "
-                      "run from the target shape).");
+                      "run from the target shape). With the mixed "
+                      "formulation near nu = 0.5 false is faster: the "
+                      "transferred state's volume error returns multiplied "
+                      "by the bulk modulus.");
     prm.leave_subsection();
   }
 

@@ -160,11 +160,19 @@ namespace RestShape
                 const LoadState  &load,
                 InverseResult    &result,
                 VectorType       &start);
+    /// One direct inverse from @p rest (updated) under @p load, aiming at
+    /// the admissible target where @p result's carried load says so.
+    DirectInverseResult
+    solve_direct_inverse(const LoadState     &load,
+                         const InverseResult &result,
+                         VectorType          &rest);
     /// Method = direct: the direct inverse from @p initial_rest into
     /// @p rest (its figures in @p result.direct), for the image without
     /// contact even where the image crosses the obstacle; whether it
     /// converged. Skipped (false) where only the obstacle holds the body
-    /// in some direction (directions_only_contact_holds()).
+    /// in some direction (directions_only_contact_holds()). From a rest
+    /// shape other than the target's (a previous cycle's), a failure
+    /// tries again from the target.
     bool
     direct_inverse(const VectorType &initial_rest,
                    const LoadState  &load,
