@@ -63,7 +63,7 @@ grep -q '"converged": true' "$out/restshape/summary.json" ||
 /usr/bin/python3 "$here/check_indented_block.py" "$out/step-44/solution-3d-10.vtu" \
   "$out/restshape/solution-0000.vtu" --tolerance 5e-7 --volume 1e-4
 
-# Q2-P1disc (the default mixed element on Q2 hexahedra) against step-44's
+# Q2-P1disc (Cell pressure = linear) against step-44's
 # degree 2 (its Q2-P1disc, 3x3x3 Gauss points) on 4^3 cells.
 mkdir -p "$out/step-44-q2"
 /usr/bin/python3 meshes/make_block.py "$out/block_4.msh" 4 1

@@ -20,6 +20,7 @@ E=3000
 t=500
 status=0
 extra=() # further --set options of the next case
+linear=(--set "Discretization/Cell pressure=linear") # Q2-P1disc
 # case NAME CELLS DEGREE FORMULATION LAW NU CHECK_LAW [LAUNCHER...]
 case_() {
   local name=$1 cells=$2 degree=$3 formulation=$4 law=$5 nu=$6 check=$7
@@ -46,10 +47,10 @@ for nu in 0.4999 0.49999; do
   case_ "p1_mixed_$nu" tetrahedra 1 mixed neo-Hookean $nu mixed-neo-Hookean
   case_ "p2_mixed_$nu" tetrahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
   case_ "q1_mixed_$nu" hexahedra 1 mixed neo-Hookean $nu mixed-neo-Hookean
-  # Q2: by default the linear pressure per cell (Q2-P1disc), then Q2-P0.
+  # Q2: by default a constant pressure per cell (Q2-P0), then Q2-P1disc.
   case_ "q2_mixed_$nu" hexahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
-  extra=(--set "Discretization/Cell pressure=constant")
-  case_ "q2_p0_mixed_$nu" hexahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
+  extra=("${linear[@]}")
+  case_ "q2_p1disc_mixed_$nu" hexahedra 2 mixed neo-Hookean $nu mixed-neo-Hookean
   extra=()
 done
 case_ p1_displacement tetrahedra 1 displacement neo-Hookean 0.3 neo-Hookean
@@ -57,15 +58,19 @@ case_ q2_displacement hexahedra 2 displacement neo-Hookean 0.3 neo-Hookean
 for law in Ogden corotational; do
   case_ "p1_mixed_$law" tetrahedra 1 mixed $law 0.4999 none
   case_ "q1_mixed_$law" hexahedra 1 mixed $law 0.4999 none
-  case_ "q2_mixed_$law" hexahedra 2 mixed $law 0.4999 none
+  extra=("${linear[@]}")
+  case_ "q2_p1disc_mixed_$law" hexahedra 2 mixed $law 0.4999 none
+  extra=()
 done
 if [ -n "$mpiexec" ]; then
   case_ p1_mixed_2_ranks tetrahedra 1 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
     $mpiexec --allow-run-as-root --oversubscribe -np 2
   case_ q1_mixed_2_ranks hexahedra 1 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
     $mpiexec --allow-run-as-root --oversubscribe -np 2
-  case_ q2_mixed_2_ranks hexahedra 2 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
+  extra=("${linear[@]}")
+  case_ q2_p1disc_mixed_2_ranks hexahedra 2 mixed neo-Hookean 0.4999 mixed-neo-Hookean \
     $mpiexec --allow-run-as-root --oversubscribe -np 2
+  extra=()
 fi
 [ $status -eq 0 ] && echo "every element passed the patch test"
 exit $status

@@ -53,8 +53,8 @@ namespace RestShape
       "bulk modulus) of a volume larger than a point, its pressure "
       "condensed: on quadratic tetrahedra and on hexahedra each cell's "
       "mean dilatation, the integral of J over the cell's rest volume (a "
-      "pressure constant per cell: P2-P0, Q1-P0, Q2-P0; on Q2 hexahedra by "
-      "default a linear one, Q2-P1disc: see Cell pressure); on linear "
+      "pressure constant per cell: P2-P0, Q1-P0, Q2-P0; on Q2 hexahedra "
+      "also a linear one, Q2-P1disc: see Cell pressure); on linear "
       "tetrahedra the averaged nodal pressure (Bonet and Burton 1998, as "
       "Joldes, Wittek and Miller use for brain shift): one volume ratio "
       "per vertex over the cells around it, each label's U(J) on its "
@@ -73,11 +73,13 @@ namespace RestShape
       "dilatation (P2-P0, Q1-P0, Q2-P0). linear: on hexahedra of degree 2 "
       "only, a dilatation and a pressure linear on each cell and "
       "discontinuous across cells, condensed (Q2-P1disc, the element of "
-      "deal.II's step-44; Simo, Taylor and Pister 1985): its pressure "
-      "converges one order faster than the constant one. auto: linear on "
-      "Q2 hexahedra, constant on P2 tetrahedra (P2-P1disc is not stable "
-      "on tetrahedra) and Q1 hexahedra. Linear tetrahedra use the "
-      "averaged nodal pressure instead.");
+      "deal.II's step-44; Simo, Taylor and Pister 1985); its Newton "
+      "iteration is less robust at large first steps (step-44's block: 64 "
+      "Newton steps against Q2-P0's 23; Hertz's hemisphere at nu = 0.4999 "
+      "pressed on the floor: fails where Q2-P0 converges in 7 s). auto: "
+      "constant (P2-P1disc is not stable on tetrahedra, nor Q1-P1disc on "
+      "hexahedra). Linear tetrahedra use the averaged nodal pressure "
+      "instead.");
     prm.declare_entry(
       "Nodal pressure at the boundary",
       "interior",
@@ -170,7 +172,7 @@ namespace RestShape
         "it is not stable on tetrahedra or Q1 hexahedra); expected constant "
         "or auto");
     linear_cell_pressure =
-      mixed && q2_hexahedra && cell_pressure_name != "constant";
+      mixed && q2_hexahedra && cell_pressure_name == "linear";
     formulation_warning.clear();
     if (locking && !mixed)
       formulation_warning =
