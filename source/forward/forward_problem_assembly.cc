@@ -96,6 +96,15 @@ namespace RestShape
   // ------------------------------------------------------------------
   // Assembly
 
+  struct ForwardProblem::CellVolumetric
+  {
+    // The pressure per mode (with one mode: U'(J_mean)) before a caller's
+    // offsets, with them (the residual's), and the tangent's (Pa).
+    std::array<double, CellPressureModes::n_modes> condensed{}, pressure{},
+      geometric{};
+    double volumetric_factor = 0; // U''(J_mean) / V (one mode)
+  };
+
   void
   ForwardProblem::local_assemble(
     const typename DoFHandler<3>::active_cell_iterator &cell,
@@ -136,18 +145,13 @@ namespace RestShape
     ElasticCell &elastic = scratch.elastic;
     elastic.reinit(magnitudes, mixed && !nodal ? n_modes : 1);
     Tensor4 A;
-    double  W                            = 0;
-    copy.energy                          = 0;
-    CellPressureModes &modes             = scratch.modes;
-    double             volumetric_factor = 0;
-    // The pressure per mode (with one mode: U'(J_mean)) before a caller's
-    // offsets, with them (the residual's), and the tangent's.
-    std::array<double, CellPressureModes::n_modes> condensed{}, pressure{},
-      geometric{};
-    double     nodal_predicted = 0; // the vertices' predicted pressure
-    const bool shifted         = cell_pressures.shifted();
-    const bool predicted       = matrix && mixed && !nodal && !shifted;
-    const auto add_points      = [&](const auto &values) {
+    double  W                = 0;
+    copy.energy              = 0;
+    CellPressureModes &modes = scratch.modes;
+    CellVolumetric     vol; // the mixed formulation's pressures
+    const bool         predicted =
+      matrix && mixed && !nodal && !cell_pressures.shifted();
+    const auto add_points = [&](const auto &values) {
       scratch.d_cell.gradients(values, scratch.grad_d);
       scratch.w_cell.gradients(values, scratch.grad_w);
       const unsigned int n = values.n_quadrature_points;
@@ -172,56 +176,13 @@ namespace RestShape
               scratch.dV_rest[q] = scratch.det_G[q] * values.JxW(q);
             }
         }
-      if (mixed && nodal)
-        {
-          // Averaged nodal pressure: the vertices' stiffness is added
-          // patch by patch (NodalVolumes::add_stiffness).
-          const NodalVolumes::CellPressure c =
-            nodal_volumes.cell(copy.cell_index, material_table, V);
-          if (!c.valid)
-            return false;
-          pressure[0]     = c.pressure;
-          nodal_predicted = c.predicted;
-          copy.energy += c.energy;
-        }
-      else if (mixed && linear)
-        {
-          modes.reinit(values);
-          if (!modes.condense(law, scratch.J, scratch.dV_rest))
-            return false;
-          copy.energy += modes.energy;
-          for (unsigned int a = 0; a < n_modes; ++a)
-            {
-              const unsigned int point = copy.cell_index * n_modes + a;
-              condensed[a]             = modes.pressure[a];
-              cell_pressures.record(point,
-                                    {modes.dilatation[a],
-                                     modes.pressure[a],
-                                     modes.mode_stiffness[a]});
-              pressure[a] = cell_pressures.pressure(point, condensed[a]);
-            }
-        }
-      else if (mixed)
-        {
-          const MaterialLaw::Volumetric U = law.volumetric(J_volume / V);
-          volumetric_factor               = U.d2U / V;
-          condensed[0]                    = U.dU;
-          copy.energy += V * U.U;
-          cell_pressures.record(copy.cell_index, {J_volume / V, U.dU, U.d2U});
-          // A caller's three-field pressure (CellPressures).
-          pressure[0] = cell_pressures.pressure(copy.cell_index, U.dU);
-        }
-      // The tangent's geometric term: the pressure the three-field step
-      // predicts (PressurePrediction), the residual's is U'(J_mean).
-      geometric = pressure;
-      if (predicted)
-        pressure_prediction.pressure(copy.cell_index,
-                                     scratch.d_cell.data(),
-                                     scratch.w_cell.data(),
-                                     pressure.data(),
-                                     geometric.data());
-      else if (matrix && nodal)
-        geometric[0] = nodal_predicted;
+      if (mixed && linear)
+        modes.reinit(values);
+      if (mixed &&
+          !cell_volumetric(scratch, copy, law, V, J_volume, matrix, vol))
+        return false;
+      const auto &pressure  = vol.pressure;
+      const auto &geometric = vol.geometric;
       for (unsigned int q = 0; q < n; ++q)
         {
           const Tensor2     &F = scratch.F[q];
@@ -229,7 +190,7 @@ namespace RestShape
           Tensor2            dJ;
           if (!(mixed ? law.evaluate_isochoric(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W) :
-                             law.evaluate(
+                        law.evaluate(
                           F, p.P, matrix ? &A : nullptr, tangent_type, &W)))
             return false;
           if (mixed)
@@ -260,7 +221,7 @@ namespace RestShape
           p.f_body  = varies ? load_set.body_force(*cell,
                                                   values.quadrature_point(q),
                                                   current_load) :
-                                    cell_body_force;
+                               cell_body_force;
           copy.energy += W * p.dV_rest;
           elastic.add(values, p);
         }
@@ -297,13 +258,14 @@ namespace RestShape
         if (linear)
           elastic.add_volumetric_stiffness(copy.cell_matrix, modes.stiffness);
         else
-          elastic.add_volumetric_stiffness(copy.cell_matrix, volumetric_factor);
+          elastic.add_volumetric_stiffness(copy.cell_matrix,
+                                           vol.volumetric_factor);
         if (predicted)
           record_pressure_linearisation(scratch,
                                         copy.cell_index,
-                                        condensed.data(),
+                                        vol.condensed.data(),
                                         linear ? &modes.stiffness(0, 0) :
-                                                 &volumetric_factor);
+                                                 &vol.volumetric_factor);
       }
     else if (matrix)
       elastic.matrix(copy.cell_matrix);
@@ -318,6 +280,69 @@ namespace RestShape
                              copy.cell_rhs,
                              copy.cell_external,
                              copy.energy});
+  }
+
+  bool
+  ForwardProblem::cell_volumetric(ScratchData       &scratch,
+                                  CopyData          &copy,
+                                  const MaterialLaw &law,
+                                  const double       V,
+                                  const double       J_volume,
+                                  const bool         matrix,
+                                  CellVolumetric    &vol) const
+  {
+    const DiscretizationParameters &d = parameters.discretization;
+    if (d.nodal_pressure)
+      {
+        // Averaged nodal pressure: the vertices' stiffness is added
+        // patch by patch (NodalVolumes::add_stiffness).
+        const NodalVolumes::CellPressure c =
+          nodal_volumes.cell(copy.cell_index, material_table, V);
+        if (!c.valid)
+          return false;
+        vol.pressure[0]  = c.pressure;
+        vol.geometric[0] = matrix ? c.predicted : c.pressure;
+        copy.energy += c.energy;
+        return true;
+      }
+    if (d.linear_cell_pressure)
+      {
+        CellPressureModes &modes = scratch.modes; // reinit by the caller
+        if (!modes.condense(law, scratch.J, scratch.dV_rest))
+          return false;
+        copy.energy += modes.energy;
+        const unsigned int n_modes = CellPressureModes::n_modes;
+        for (unsigned int a = 0; a < n_modes; ++a)
+          {
+            const unsigned int point = copy.cell_index * n_modes + a;
+            vol.condensed[a]         = modes.pressure[a];
+            cell_pressures.record(point,
+                                  {modes.dilatation[a],
+                                   modes.pressure[a],
+                                   modes.mode_stiffness[a]});
+            vol.pressure[a] = cell_pressures.pressure(point, vol.condensed[a]);
+          }
+      }
+    else
+      {
+        const MaterialLaw::Volumetric U = law.volumetric(J_volume / V);
+        vol.volumetric_factor           = U.d2U / V;
+        vol.condensed[0]                = U.dU;
+        copy.energy += V * U.U;
+        cell_pressures.record(copy.cell_index, {J_volume / V, U.dU, U.d2U});
+        // A caller's three-field pressure (CellPressures).
+        vol.pressure[0] = cell_pressures.pressure(copy.cell_index, U.dU);
+      }
+    // The tangent's geometric term: the pressure the three-field step
+    // predicts (PressurePrediction), the residual's is U'(J_mean).
+    vol.geometric = vol.pressure;
+    if (matrix && !cell_pressures.shifted())
+      pressure_prediction.pressure(copy.cell_index,
+                                   scratch.d_cell.data(),
+                                   scratch.w_cell.data(),
+                                   vol.pressure.data(),
+                                   vol.geometric.data());
+    return true;
   }
 
   void

@@ -317,6 +317,7 @@ namespace RestShape
     resolve_linear_solver() const;
     struct ScratchData;
     struct CopyData;
+    struct CellVolumetric;
     enum class Assemble
     {
       residual,
@@ -349,6 +350,18 @@ namespace RestShape
       ScratchData                                                &scratch,
       CopyData                                                   &copy,
       const Assemble                                              what) const;
+    /// The mixed formulation's pressures of the cell being assembled
+    /// (rest volume @p V, int J dV_rest @p J_volume; with a linear
+    /// pressure, @p scratch's modes reinit for it), its volumetric energy
+    /// added to @p copy; false where its volumes are not admissible.
+    bool
+    cell_volumetric(ScratchData       &scratch,
+                    CopyData          &copy,
+                    const MaterialLaw &law,
+                    const double       V,
+                    const double       J_volume,
+                    const bool         matrix,
+                    CellVolumetric    &vol) const;
     /// Record the cell's pressure linearisation (PressurePrediction) from
     /// the volume gradients in @p scratch's ElasticCell: the condensed
     /// pressures of its modes and their derivatives (m x m).
