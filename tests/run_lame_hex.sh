@@ -12,6 +12,7 @@ set -eu
 exe=$1
 out=$2
 here=$(dirname "$0")
+source "$here/lame_shell_runs.sh"
 rm -rf "$out"
 mkdir -p "$out"
 sizes=(4 2.8)
@@ -27,16 +28,7 @@ rms() {
     --set "Discretization/Cell pressure=linear" \
     --set "Solver/Check stability=false" "$here/data/lame_shell.prm" >"$out/$1.log" 2>&1 ||
     { echo "FAIL: $1: exit $?" >&2; tail -n 3 "$out/$1.log" >&2; exit 1; }
-  local figure
-  figure=$(/usr/bin/python3 "$here/check_lame_shell.py" "$out/$1/nodes.csv" --E 3000 \
-    --nu "$4" --p-inner 1 --support 1e3 --label "$1" |
-    sed -E 's/.*displacement ([0-9.]+) %.*/\1/')
-  echo "$figure $(grep -o '"n_nodes": [0-9]*' "$out/$1/summary.json" | grep -o '[0-9]*$')"
-}
-# rate "E1 N1" "E2 N2": the rate in h ~ nodes^(-1/3).
-rate() {
-  awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, q, " ")
-    printf "%.2f", log(p[1] / q[1]) / (log(q[2] / p[2]) / 3) }'
+  lame_figure "$1" "$4"
 }
 reference_4=$(rms q2_0.3_4 4 displacement 0.3)
 reference_2=$(rms q2_0.3_2.8 2.8 displacement 0.3)
@@ -45,8 +37,8 @@ grep -q '"cell_pressure": "linear"' "$out/q2_p1disc_4/summary.json" ||
   { echo "FAIL: Q2 mixed did not use the linear pressure per cell"; exit 1; }
 mixed_2=$(rms q2_p1disc_2.8 2.8 mixed 0.4999)
 locked_4=$(rms q2_locking_4 4 displacement 0.4999)
-r0=$(rate "$reference_4" "$reference_2")
-r=$(rate "$mixed_4" "$mixed_2")
+r0=$(lame_rate "$reference_4" "$reference_2")
+r=$(lame_rate "$mixed_4" "$mixed_2")
 echo "Q2 displacement, nu = 0.3: ${reference_4%% *} %, ${reference_2%% *} % (rate $r0)"
 echo "Q2-P1disc, nu = 0.4999: ${mixed_4%% *} %, ${mixed_2%% *} % (rate $r)"
 echo "Q2 displacement, nu = 0.4999: ${locked_4%% *} % on 4 mm"

@@ -16,6 +16,7 @@ set -eu
 exe=$1
 out=$2
 here=$(dirname "$0")
+source "$here/lame_shell_runs.sh"
 rm -rf "$out"
 mkdir -p "$out"
 sizes=(4 2.8 2)
@@ -29,11 +30,7 @@ rms() {
     --set "Discretization/Polynomial degree=$1" --set "Discretization/Formulation=$3" \
     --set "Materials/Poisson's ratio=$4" --set "Solver/Check stability=false" "$here/data/lame_shell.prm" >"$out/$name.log" 2>&1 ||
     { echo "FAIL: $name: exit $?" >&2; tail -n 3 "$out/$name.log" >&2; exit 1; }
-  local figure
-  figure=$(/usr/bin/python3 "$here/check_lame_shell.py" "$out/$name/nodes.csv" --E 3000 \
-    --nu "$4" --p-inner 1 --support 1e3 --label "$name" |
-    sed -E 's/.*displacement ([0-9.]+) %.*/\1/')
-  echo "$figure $(grep -o '"n_nodes": [0-9]*' "$out/$name/summary.json" | grep -o '[0-9]*$')"
+  lame_figure "$name" "$4"
 }
 fail=0
 # rates DEGREE FORMULATION NU SIZE...: prints the errors and rates, sets
@@ -47,10 +44,7 @@ rates() {
     errors+=("$e")
     line+=" h=$h: $e % ($n nodes)"
     if [ -n "$previous" ]; then
-      last_rate=$(awk -v a="$previous" -v b="$e $n" 'BEGIN {
-        split(a, p, " "); split(b, q, " ")
-        # h ~ nodes^(-1/3): rate = log(e1/e2) / log(h1/h2)
-        printf "%.2f", log(p[1] / q[1]) / (log(q[2] / p[2]) / 3) }')
+      last_rate=$(lame_rate "$previous" "$e $n")
       line+=" rate $last_rate;"
     fi
     previous="$e $n"
