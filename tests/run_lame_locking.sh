@@ -22,7 +22,8 @@ run() {
   local name=$1 nu=$2
   shift 2
   "$exe" --set "Output/Directory=$out/$name" --set "Discretization/Polynomial degree=2" \
-    --set "Materials/Poisson's ratio=$nu" "$@" "$prm" >"$out/$name.log" 2>&1 ||
+    --set "Materials/Poisson's ratio=$nu" --set "Solver/Check stability=false" \
+    "$@" "$prm" >"$out/$name.log" 2>&1 ||
     { echo "FAIL: $name: exit $?"; tail -n 3 "$out/$name.log"; exit 1; }
 }
 # figures NAME NU: "RMS CAVITY" of the run against the closed form.
@@ -39,7 +40,7 @@ grep -q "Warning: Poisson's ratio 0.4999 (0.49 or above) with the displacement f
   "$out/displacement_0.4999.log" || { echo "FAIL: no locking warning"; exit 1; }
 fail=0
 for nu in 0.4999 0.49999; do
-  run mixed_$nu $nu --set Discretization/Formulation=mixed
+  run mixed_$nu $nu --set Discretization/Formulation=mixed --set "Output/Write VTU=$([ $nu = 0.4999 ] && echo true || echo false)"
   read -r rms cavity < <(figures mixed_$nu $nu)
   if awk -v r="$rms" -v r0="$rms_ref" -v c="$cavity" -v c0="$cavity_ref" \
     'BEGIN { exit !(r <= 1.1 * r0 && c >= c0 - 0.02 && c <= c0 + 0.02) }'; then
@@ -62,8 +63,7 @@ field() {
 # The pressure field as ParaView's VTK reads it: the cells' mean of
 # pressure_Pa against the exact -tr(sigma)/3 = -3 K A (constant in the
 # Lame shell), within 10 % (P2-P0: 4 %; single cells scatter about it).
-run pressure_0.4999 0.4999 --set Discretization/Formulation=mixed --set "Output/Write VTU=true"
-field pressure_0.4999 --scatter inf --jump inf --volume-change 1e-5 || fail=1
+field mixed_0.4999 --scatter inf --jump inf --volume-change 1e-5 || fail=1
 run auto_0.4999 0.4999
 grep -q '"formulation": "mixed"' "$out/auto_0.4999/summary.json" ||
   { echo "FAIL: auto did not choose mixed at 0.4999"; exit 1; }

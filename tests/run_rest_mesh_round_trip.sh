@@ -7,7 +7,9 @@
 # error the inverse run reported.
 #
 # usage: run_rest_mesh_round_trip.sh RESTSHAPE OUT SCENE.prm [--set ...]
-# Environment: SLACK (mm).
+# Environment: SLACK (mm); INVERSE: the output directory of an inverse run
+# of the same SCENE.prm and settings (a scene test's) to take instead of
+# running it again.
 set -u
 exe=$1
 out=$2
@@ -16,8 +18,13 @@ shift 3
 slack=${SLACK:-1e-6}
 rm -rf "$out"
 mkdir -p "$out"
-"$exe" "$@" --set "Output/Directory=$out/inverse" "$scene" >"$out/inverse.log" 2>&1 ||
-  { echo "inverse run failed"; tail "$out/inverse.log"; exit 1; }
+if [ -n "${INVERSE:-}" ]; then
+  [ -f "$INVERSE/rest_shape.msh" ] || { echo "no rest_shape.msh in $INVERSE"; exit 1; }
+  ln -s "$(realpath "$INVERSE")" "$out/inverse"
+else
+  "$exe" "$@" --set "Output/Directory=$out/inverse" "$scene" >"$out/inverse.log" 2>&1 ||
+    { echo "inverse run failed"; tail "$out/inverse.log"; exit 1; }
+fi
 "$exe" "$@" --set "Inverse problem/Enabled=false" \
   --set "Scenario/Enabled=false" \
   --set "Mesh/File=$out/inverse/rest_shape.msh" \
