@@ -29,19 +29,42 @@ namespace RestShape
 {
   using namespace dealii;
 
+  namespace
+  {
+    using SetThreads = void (*)(int);
+    /// OpenBLAS's openblas_set_num_threads, or nullptr where the user set
+    /// OPENBLAS_NUM_THREADS or OpenBLAS is not loaded. Looked up at run
+    /// time: OpenBLAS comes in through deal.II's and MUMPS's dependencies
+    /// (Debian's BLAS alternative), not our link line.
+    SetThreads
+    blas_thread_setter()
+    {
+      if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr)
+        return nullptr;
+      return reinterpret_cast<SetThreads>(
+        dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    }
+  } // namespace
+
   unsigned int
   match_blas_threads_to_deal_ii()
   {
-    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr)
-      return 0;
-    // Looked up at run time: OpenBLAS comes in through deal.II's and
-    // MUMPS's dependencies (Debian's BLAS alternative), not our link line.
-    using SetThreads = void (*)(int);
-    const auto set   = reinterpret_cast<SetThreads>(
-      dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    const SetThreads set = blas_thread_setter();
     if (set == nullptr)
       return 0;
     const unsigned int n = MultithreadInfo::n_threads();
+    set(static_cast<int>(n));
+    return n;
+  }
+
+  unsigned int
+  set_blas_threads_for(const types::global_dof_index unknowns)
+  {
+    const SetThreads set = blas_thread_setter();
+    if (set == nullptr)
+      return 0;
+    const unsigned int n =
+      unknowns >= blas_threads_min_unknowns ? MultithreadInfo::n_threads() : 1;
     set(static_cast<int>(n));
     return n;
   }
@@ -157,6 +180,7 @@ namespace RestShape
   {
     Epetra_CrsMatrix &matrix =
       const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+    set_blas_threads_for(A.m());
     // Direct factorisation = ldlt, one process and a symmetric tangent:
     // MUMPS's LDL^T (SymmetricMumps).
     if (parameters.symmetric_factorisation && symmetric &&

@@ -35,6 +35,26 @@ namespace RestShape
   unsigned int
   match_blas_threads_to_deal_ii();
 
+  /**
+   * Systems of fewer unknowns are factorised with one OpenBLAS thread: a
+   * second one gains nothing there and spins between MUMPS's BLAS calls,
+   * taking a core from the assembly's threads (or from another run). On
+   * a 2-core AMD EPYC, MUMPS with 2 threads against 1: P2 strip of 9,045
+   * DoFs (tests/unit/contact/peeling_strip.cc) 55.5 against 49.7 s, twice
+   * the CPU time; P2 brain of 25,173 DoFs on the skull 36.2 against 41.7
+   * s; Q2 hemisphere of 77,763 DoFs 81 against 125 s.
+   */
+  constexpr dealii::types::global_dof_index blas_threads_min_unknowns = 20000;
+
+  /**
+   * Before a factorisation of a system of @p unknowns: OpenBLAS's thread
+   * count to deal.II's from blas_threads_min_unknowns up, to 1 below.
+   * Returns the count set, 0 if it left OpenBLAS alone (OPENBLAS_NUM_THREADS
+   * set, or no OpenBLAS loaded).
+   */
+  unsigned int
+  set_blas_threads_for(const dealii::types::global_dof_index unknowns);
+
   class SymmetricMumps;
 
   class LinearSolver

@@ -2,7 +2,9 @@
 // DEAL_II_NUM_THREADS=1, or two MPI ranks on two cores, it must not start a
 // thread per core of its own (found running two stability cases side by
 // side: each process had an OpenBLAS thread in dgemm next to its main
-// thread). A user's OPENBLAS_NUM_THREADS is left alone.
+// thread). Factorisations of fewer than blas_threads_min_unknowns unknowns
+// take one thread (a second one spins between MUMPS's BLAS calls there),
+// larger ones deal.II's count. A user's OPENBLAS_NUM_THREADS is left alone.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
@@ -48,6 +50,22 @@ main(int argc, char **argv)
   check_between("count returned", match_blas_threads_to_deal_ii(), 1, 1);
   check_between("OpenBLAS threads after", get(), 1, 1);
 
+  // By the size of the system factorised, with deal.II's count raised to
+  // 2 (where the machine has 2 cores).
+  MultithreadInfo::set_thread_limit(2);
+  const unsigned int threads = MultithreadInfo::n_threads();
+  set(2);
+  check_between("small system: count returned",
+                set_blas_threads_for(blas_threads_min_unknowns - 1),
+                1,
+                1);
+  check_between("small system: OpenBLAS threads", get(), 1, 1);
+  check_between("large system: count returned",
+                set_blas_threads_for(blas_threads_min_unknowns),
+                threads,
+                threads);
+  check_between("large system: OpenBLAS threads", get(), threads, threads);
+
   // The user's OPENBLAS_NUM_THREADS wins.
   set(2);
   setenv("OPENBLAS_NUM_THREADS", "2", 1);
@@ -56,5 +74,13 @@ main(int argc, char **argv)
                 0,
                 0);
   check_between("with OPENBLAS_NUM_THREADS: OpenBLAS threads", get(), 2, 2);
+  check_between("with OPENBLAS_NUM_THREADS: count for a small system",
+                set_blas_threads_for(1),
+                0,
+                0);
+  check_between("with OPENBLAS_NUM_THREADS: OpenBLAS threads after it",
+                get(),
+                2,
+                2);
   return exit_code();
 }
