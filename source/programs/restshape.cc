@@ -144,7 +144,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc,
                                        argv,
                                        numbers::invalid_unsigned_int);
-  match_blas_threads_to_deal_ii();
+  set_blas_threads_for(no_factorisation);
   install_interrupt_handlers();
   const MPI_Comm comm = MPI_COMM_WORLD;
   const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;

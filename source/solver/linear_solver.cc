@@ -47,24 +47,14 @@ namespace RestShape
   } // namespace
 
   unsigned int
-  match_blas_threads_to_deal_ii()
+  set_blas_threads_for(const types::global_dof_index factorised_unknowns)
   {
     const SetThreads set = blas_thread_setter();
     if (set == nullptr)
       return 0;
-    const unsigned int n = MultithreadInfo::n_threads();
-    set(static_cast<int>(n));
-    return n;
-  }
-
-  unsigned int
-  set_blas_threads_for(const types::global_dof_index unknowns)
-  {
-    const SetThreads set = blas_thread_setter();
-    if (set == nullptr)
-      return 0;
-    const unsigned int n =
-      unknowns >= blas_threads_min_unknowns ? MultithreadInfo::n_threads() : 1;
+    const unsigned int n = factorised_unknowns >= blas_threads_min_unknowns ?
+                             MultithreadInfo::n_threads() :
+                             1;
     set(static_cast<int>(n));
     return n;
   }
@@ -406,6 +396,7 @@ namespace RestShape
                                   const VectorType &b,
                                   const double      relative_tolerance)
   {
+    set_blas_threads_for(no_factorisation);
     const double target = relative_tolerance * b.l2_norm();
     if (setup_amg(A, AmgSetup::as_configured))
       return run_krylov(A, x, b, target);

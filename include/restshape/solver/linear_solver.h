@@ -26,34 +26,35 @@ namespace RestShape
   /**
    * OpenBLAS (which MUMPS factorises with) starts one thread per core of its
    * own, whatever DEAL_II_NUM_THREADS or the number of MPI ranks on a node
-   * say. Sets OpenBLAS's thread count to deal.II's
-   * (MultithreadInfo::n_threads(), which MPI_InitFinalize splits among the
-   * ranks of a node), unless OPENBLAS_NUM_THREADS is set. Returns the
-   * count set, 0 if it left OpenBLAS alone (variable set, or no OpenBLAS
-   * loaded).
-   */
-  unsigned int
-  match_blas_threads_to_deal_ii();
-
-  /**
-   * Systems of fewer unknowns are factorised with one OpenBLAS thread: a
-   * second one gains nothing there and spins between MUMPS's BLAS calls,
-   * taking a core from the assembly's threads (or from another run). On
-   * a 2-core AMD EPYC, MUMPS with 2 threads against 1: P2 strip of 9,045
-   * DoFs (tests/unit/contact/peeling_strip.cc) 55.5 against 49.7 s, twice
-   * the CPU time; P2 brain of 25,173 DoFs on the skull 36.2 against 41.7
-   * s; Q2 hemisphere of 77,763 DoFs 81 against 125 s.
+   * say, and an idle one spins in sched_yield between BLAS calls, taking a
+   * core from the assembly's threads, another rank or another run. It gets
+   * deal.II's count (MultithreadInfo::n_threads(), which MPI_InitFinalize
+   * splits among the ranks of a node) only to factorise systems of at least
+   * blas_threads_min_unknowns unknowns (and for the direct solves with that
+   * factorisation), one thread otherwise. On a 2-core AMD EPYC, 2 threads
+   * against 1: MUMPS on the P2 strip of 9,045 DoFs
+   * (tests/unit/contact/peeling_strip.cc) 55.5 against 49.7 s, twice the
+   * CPU time; P2 brain of 25,173 DoFs on the skull 36.2 against 41.7 s; Q2
+   * hemisphere of 77,763 DoFs 81 against 125 s. CG + AMG (Epetra's vector
+   * operations) on 202,095 DoFs: 49.4 against 50.1 s, with 24.2 against
+   * 0.7 s of system time.
    */
   constexpr dealii::types::global_dof_index blas_threads_min_unknowns = 20000;
 
+  /// What set_blas_threads_for() is given outside factorisations: the
+  /// start of a run, iterative solves.
+  constexpr dealii::types::global_dof_index no_factorisation = 0;
+
   /**
-   * Before a factorisation of a system of @p unknowns: OpenBLAS's thread
-   * count to deal.II's from blas_threads_min_unknowns up, to 1 below.
-   * Returns the count set, 0 if it left OpenBLAS alone (OPENBLAS_NUM_THREADS
-   * set, or no OpenBLAS loaded).
+   * Before a factorisation of a system of @p factorised_unknowns unknowns
+   * (or with no_factorisation before other work): OpenBLAS's thread count
+   * to deal.II's from blas_threads_min_unknowns up, to 1 below. Returns the
+   * count set, 0 if it left OpenBLAS alone (OPENBLAS_NUM_THREADS set, or no
+   * OpenBLAS loaded).
    */
   unsigned int
-  set_blas_threads_for(const dealii::types::global_dof_index unknowns);
+  set_blas_threads_for(
+    const dealii::types::global_dof_index factorised_unknowns);
 
   class SymmetricMumps;
 
