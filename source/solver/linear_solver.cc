@@ -330,14 +330,16 @@ namespace RestShape
     if (!parameters.amg_smoothed_aggregation)
       list.set("aggregation: damping factor", 0.0);
 
-    const Epetra_Map &map = A.trilinos_matrix().DomainMap();
-    null_space =
-      std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
-    for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
-      for (int i = 0; i < map.NumMyElements(); ++i)
-        (*null_space)[m][i] = rigid_body_modes[m][i];
+    // Without modes, ML's default null space (the constants); Epetra
+    // refuses a multivector of no vectors.
     if (!rigid_body_modes.empty())
       {
+        const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+        null_space =
+          std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
+        for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
+          for (int i = 0; i < map.NumMyElements(); ++i)
+            (*null_space)[m][i] = rigid_body_modes[m][i];
         list.set("null space: type", "pre-computed");
         list.set("null space: dimension", null_space->NumVectors());
         list.set("null space: vectors", null_space->Values());
