@@ -9,7 +9,9 @@
 # it than P2 on the same mesh), a point per run in the plot, and one line
 # per run started and finished. A study over Poisson's ratio on the Lame
 # shell (tests/data/lame_shell.prm) names the formulation auto chose per
-# row: displacement at 0.45, mixed at 0.4999.
+# row: displacement at 0.45, mixed at 0.4999. One over the formulation at
+# nu = 0.4977 flags the displacement row's locking (locking_warning true,
+# and its line says so), not the mixed one.
 #
 # usage: run_study.sh RESTSHAPE OUTPUT_DIRECTORY
 set -eu
@@ -50,4 +52,15 @@ formulations=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
 [ "$formulations" = "0.45:displacement 0.4999:mixed " ] ||
   { echo "FAIL: formulation column: $formulations"; exit 1; }
 echo "formulation column: $formulations"
+"$exe" --study "Discretization/Formulation=displacement,mixed" --set "Output/Directory=$out/locking" \
+  --set "Materials/Poisson's ratio=0.4977" --set "Solver/Check stability=false" \
+  tests/data/lame_shell.prm >"$out.locking.log" ||
+  { echo "FAIL: the study over the formulation"; tail -n 5 "$out.locking.log"; exit 1; }
+warned=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  { printf "%s:%s ", $col["formulation"], $col["locking_warning"] }' "$out/locking/study/study.csv")
+[ "$warned" = "displacement:true mixed:false " ] ||
+  { echo "FAIL: locking_warning column: $warned"; exit 1; }
+[ "$(grep -c 'finished: .*warned: the displacement formulation locks' "$out.locking.log")" -eq 1 ] ||
+  { echo "FAIL: not one finished line warning of locking"; cat "$out.locking.log"; exit 1; }
+echo "locking_warning column: $warned"
 echo ok

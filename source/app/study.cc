@@ -287,6 +287,14 @@ namespace RestShape
       return finest;
     }
 
+    /// Whether the run warned that its displacement formulation locks
+    /// (summary.json's formulation_warning).
+    bool
+    locks(const StudyRun &run)
+    {
+      return !run.summary.get<std::string>("formulation_warning", "").empty();
+    }
+
     /// "converged, 3597 DoFs, 4 Newton steps (+ 4 of the direct inverse,
     /// 13 Jacobian products), 0.52 s, 187 MB"
     std::string
@@ -310,6 +318,9 @@ namespace RestShape
       if (const auto it = run.number("inverse_iterations"))
         text << ", " << long(*it) << " inverse iterations";
       text << ", " << run.seconds << " s, " << run.memory_mb << " MB";
+      if (locks(run))
+        text << "; warned: the displacement formulation locks at this "
+                "Poisson's ratio";
       return text.str();
     }
   } // namespace
@@ -449,8 +460,9 @@ namespace RestShape
     std::vector<std::vector<std::string>> rows;
     for (const StudyAxis &axis : axes)
       header.push_back(axis.parameter.substr(axis.parameter.rfind('/') + 1));
-    header.insert(header.end(),
-                  {"exit_code", "converged", "n_dofs", "formulation"});
+    header.insert(
+      header.end(),
+      {"exit_code", "converged", "n_dofs", "formulation", "locking_warning"});
     header.insert(header.end(), costs.begin(), costs.end());
     header.insert(header.end(), errors.begin(), errors.end());
     header.insert(header.end(), inverse_errors.begin(), inverse_errors.end());
@@ -475,6 +487,7 @@ namespace RestShape
         row.push_back(run.summary.get<std::string>("converged", "false"));
         row.push_back(text(run.number("n_dofs")));
         row.push_back(run.summary.get<std::string>("formulation", "-"));
+        row.push_back(locks(run) ? "true" : "false");
         for (const auto *keys : {&costs, &errors, &inverse_errors})
           for (const std::string &key : *keys)
             row.push_back(text(run.number(key)));

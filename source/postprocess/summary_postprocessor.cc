@@ -135,6 +135,11 @@ namespace RestShape
     if (!p.forward.discretization.formulation_note.empty())
       summary.set("formulation_note",
                   p.forward.discretization.formulation_note);
+    // The displacement formulation forced where a Poisson's ratio is 0.49
+    // or above: it locks (the run's warning, for scripts and studies).
+    if (!p.forward.discretization.formulation_warning.empty())
+      summary.set("formulation_warning",
+                  p.forward.discretization.formulation_warning);
     summary.set("n_cells",
                 long(in.mesh.triangulation().n_global_active_cells()));
     summary.set("n_nodes", long(r.n_nodes));
