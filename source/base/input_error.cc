@@ -42,6 +42,52 @@ namespace RestShape
         text += parameter + ": ";
       return printable(text + message);
     }
+
+    /// deal.II's description of a pattern in words: "[Selection a|b ]" ->
+    /// "one of a, b", "[Integer range 1...2147483647 (inclusive)]" -> "an
+    /// integer of at least 1", "[Bool]" -> "true or false"; others as
+    /// deal.II writes them.
+    std::string
+    pattern_in_words(const std::string &pattern)
+    {
+      std::smatch             m;
+      static const std::regex selection(R"(Selection (.*?) *)");
+      static const std::regex range(
+        R"((Integer range|Double) (\S+)\.\.\.(\S+) \(inclusive\))");
+      if (std::regex_match(pattern, m, selection))
+        return "one of " +
+               std::regex_replace(m[1].str(), std::regex(R"(\|)"), ", ");
+      if (pattern == "Bool")
+        return "true or false";
+      if (std::regex_match(pattern, m, range))
+        {
+          const std::string kind = m[1] == "Double" ? "a number" : "an integer";
+          const bool no_limit    = m[3] == "MAX_DOUBLE" || m[3] == "2147483647";
+          return kind + (no_limit ?
+                           " of at least " + m[2].str() :
+                           " from " + m[2].str() + " to " + m[3].str());
+        }
+      return "[" + pattern + "]";
+    }
+
+    /// ParameterHandler's messages for a value that does not match its
+    /// pattern, in words: "NAME = 'VALUE'; expected ...".
+    std::string
+    pattern_message_in_words(const std::string &text)
+    {
+      static const std::regex in_file(
+        R"(The entry value (.*) for the entry named (.*) does not match the given pattern: \[(.*)\])");
+      static const std::regex in_set(
+        R"(The string <(.*)> does not match the given pattern <\[(.*)\]>\.?)");
+      std::smatch m;
+      if (std::regex_search(text, m, in_file))
+        return m.prefix().str() + m[2].str() + " = '" + m[1].str() +
+               "'; expected " + pattern_in_words(m[3].str()) + m.suffix().str();
+      if (std::regex_search(text, m, in_set))
+        return m.prefix().str() + "'" + m[1].str() + "'; expected " +
+               pattern_in_words(m[2].str()) + m.suffix().str();
+      return text;
+    }
   } // namespace
 
   InputError::InputError(const std::string &file,
@@ -90,7 +136,8 @@ namespace RestShape
         }
     // ParameterHandler: "Line <3> of file <scene.prm>: ..." -> "line 3: ...".
     static const std::regex prm_location("Line <([0-9]+)> of file <[^>]*>?:");
-    return std::regex_replace(result, prm_location, "line $1:");
+    return pattern_message_in_words(
+      std::regex_replace(result, prm_location, "line $1:"));
   }
 
   std::string
