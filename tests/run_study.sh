@@ -44,11 +44,15 @@ awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
   { echo "FAIL: not one point per run in the plot"; exit 1; }
 [ "$(grep -c 'started: ' "$out.log")" -eq 4 ] && [ "$(grep -c 'finished: converged, .* DoFs' "$out.log")" -eq 4 ] ||
   { echo "FAIL: not one line per run started and finished"; exit 1; }
+# column_pairs CSV A B: "a:b " for each row, from the columns named A, B.
+column_pairs() {
+  awk -F, -v a="$2" -v b="$3" 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+    { printf "%s:%s ", $col[a], $col[b] }' "$1"
+}
 "$exe" --study "Materials/Poisson's ratio=0.45,0.4999" --set "Output/Directory=$out/nu" \
   --set "Solver/Check stability=false" tests/data/lame_shell.prm >"$out.nu.log" ||
   { echo "FAIL: the study over Poisson's ratio"; tail -n 5 "$out.nu.log"; exit 1; }
-formulations=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
-  { printf "%s:%s ", $col["Poisson'"'"'s ratio"], $col["formulation"] }' "$out/nu/study/study.csv")
+formulations=$(column_pairs "$out/nu/study/study.csv" "Poisson's ratio" formulation)
 [ "$formulations" = "0.45:displacement 0.4999:mixed " ] ||
   { echo "FAIL: formulation column: $formulations"; exit 1; }
 echo "formulation column: $formulations"
@@ -56,8 +60,7 @@ echo "formulation column: $formulations"
   --set "Materials/Poisson's ratio=0.4977" --set "Solver/Check stability=false" \
   tests/data/lame_shell.prm >"$out.locking.log" ||
   { echo "FAIL: the study over the formulation"; tail -n 5 "$out.locking.log"; exit 1; }
-warned=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
-  { printf "%s:%s ", $col["formulation"], $col["locking_warning"] }' "$out/locking/study/study.csv")
+warned=$(column_pairs "$out/locking/study/study.csv" formulation locking_warning)
 [ "$warned" = "displacement:true mixed:false " ] ||
   { echo "FAIL: locking_warning column: $warned"; exit 1; }
 [ "$(grep -c 'finished: .*warned: the displacement formulation locks' "$out.locking.log")" -eq 1 ] ||

@@ -2,6 +2,7 @@
 
 #include <restshape/base/input_error.h>
 
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -62,7 +63,10 @@ namespace RestShape
       if (std::regex_match(pattern, m, range))
         {
           const std::string kind = m[1] == "Double" ? "a number" : "an integer";
-          const bool no_limit    = m[3] == "MAX_DOUBLE" || m[3] == "2147483647";
+          // deal.II's bounds when none is given: MAX_DOUBLE, INT_MAX.
+          const bool no_limit =
+            m[3] == "MAX_DOUBLE" ||
+            m[3] == std::to_string(std::numeric_limits<int>::max());
           return kind + (no_limit ?
                            " of at least " + m[2].str() :
                            " from " + m[2].str() + " to " + m[3].str());
