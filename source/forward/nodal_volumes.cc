@@ -5,8 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <restshape/fem/compressed_row.h>
+#include <restshape/fem/outer_product.h>
 #include <restshape/forward/nodal_volumes.h>
 
 #include <algorithm>
@@ -390,7 +389,7 @@ namespace RestShape
         if (std::none_of(patch.begin(), patch.end(), [&](const auto i) {
               return constraints.is_constrained(i);
             }))
-          add_rows(factor, patch, g, tangent);
+          add_outer_product(factor, patch, g, tangent);
         else
           {
             const unsigned int n = patch.size();
@@ -402,58 +401,6 @@ namespace RestShape
             constraints.distribute_local_to_global(
               M, no_rhs, patch, tangent, rhs);
           }
-      }
-  }
-
-  void
-  NodalVolumes::add_rows(const double                                factor,
-                         const std::vector<types::global_dof_index> &patch,
-                         const std::vector<double>                  &g,
-                         TrilinosWrappers::SparseMatrix             &tangent)
-  {
-    // A patch none of whose DoFs is constrained: its rows straight into
-    // the matrix (AffineConstraints' general path, which sorts the
-    // patch's DoFs and looks each one up in its constraints, took 70 % of
-    // add_stiffness on the brain). Where the matrix's compressed rows are
-    // at hand (this process's rows), each row's entries are found by one
-    // walk along the row with the patch's columns sorted (find_in_row),
-    // not by Epetra's map lookup and search per entry (0.73e9 of the
-    // 1.08e9 instructions of add_stiffness on the in vivo brain); the
-    // values added are the same.
-    const unsigned int n      = patch.size();
-    Epetra_CrsMatrix  &matrix = const_cast<Epetra_CrsMatrix &>(
-      static_cast<const TrilinosWrappers::SparseMatrix &>(tangent)
-        .trilinos_matrix());
-    int    *offsets = nullptr, *indices = nullptr;
-    double *values = nullptr;
-    std::vector<std::pair<int, unsigned int>> columns(n); // (local, j)
-    bool direct = matrix.Filled() && matrix.StorageOptimized() &&
-                  matrix.ExtractCrsDataPointers(offsets, indices, values) == 0;
-    for (unsigned int j = 0; direct && j < n; ++j)
-      {
-        columns[j] = {matrix.LCID(static_cast<int>(patch[j])), j};
-        direct     = columns[j].first >= 0;
-      }
-    if (direct)
-      std::sort(columns.begin(), columns.end());
-    std::vector<int>    place(n);
-    std::vector<double> row(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const int r = direct ? matrix.LRID(static_cast<int>(patch[i])) : -1;
-        if (r >= 0 && find_in_row(columns.data(),
-                                  n,
-                                  indices + offsets[r],
-                                  indices + offsets[r + 1],
-                                  place.data()))
-          {
-            for (unsigned int j = 0; j < n; ++j)
-              values[offsets[r] + place[j]] += factor * g[i] * g[j];
-            continue;
-          }
-        for (unsigned int j = 0; j < n; ++j)
-          row[j] = factor * g[i] * g[j];
-        tangent.add(patch[i], n, patch.data(), row.data(), false, false);
       }
   }
 } // namespace RestShape

@@ -119,14 +119,6 @@ namespace RestShape
 
 
   private:
-    /// tangent += factor g g^T at the rows and columns @p patch, none of
-    /// them constrained.
-    static void
-    add_rows(const double                                        factor,
-             const std::vector<dealii::types::global_dof_index> &patch,
-             const std::vector<double>                          &g,
-             dealii::TrilinosWrappers::SparseMatrix             &tangent);
-
     struct Cell
     {
       std::array<dealii::Point<3>, 4>                 vertices;
