@@ -148,6 +148,16 @@ namespace RestShape
       linear_solver->allow_direct_fallback();
     if (linear_solver_type == LinearSolverType::cg_amg)
       compute_rigid_body_modes();
+    records_coupling =
+      linear_solver_type == LinearSolverType::cg_amg &&
+      parameters.discretization.mixed &&
+      parameters.solver.mixed_preconditioner == MixedPreconditioner::block;
+    if (records_coupling)
+      pcout << "Linear solver: the block preconditioner of the mixed "
+               "formulation (Solver/Mixed preconditioner)"
+            << std::endl;
+    linear_solver->set_pressure_coupling(records_coupling ? &pressure_coupling :
+                                                            nullptr);
     newton_solver.setup(linear_solver.get(), linear_solver_type);
   }
 

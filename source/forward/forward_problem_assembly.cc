@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <restshape/fem/elastic_cell.h>
 #include <restshape/fem/simplex_values.h>
@@ -86,11 +87,14 @@ namespace RestShape
     Vector<double>                       cell_magnitude; // |f_ext| + |f_int|
     std::vector<types::global_dof_index> dofs;
     std::vector<unsigned int>            local; // CellLocalIndices
-    bool                                 valid      = true;
-    unsigned int                         cell_index = 0; // active index
-    Point<3>                             center;         // of an inverted cell
-    types::material_id                   label = 0;
-    double energy                              = 0; // int W dV_rest - f_ext . d
+    // The condensed pressure unknowns' rows of G (each n DoFs long) and
+    // their stiffness k (records_coupling).
+    std::vector<double> coupling_rows, coupling_factors;
+    bool                valid      = true;
+    unsigned int        cell_index = 0; // active index
+    Point<3>            center;         // of an inverted cell
+    types::material_id  label  = 0;
+    double              energy = 0; // int W dV_rest - f_ext . d
   };
 
   // ------------------------------------------------------------------
@@ -260,6 +264,13 @@ namespace RestShape
         else
           elastic.add_volumetric_stiffness(copy.cell_matrix,
                                            vol.volumetric_factor);
+        if (records_coupling)
+          coupling_rows(scratch,
+                        coupled_fraction(law.mu, law.bulk_modulus),
+                        linear ?
+                          modes.stiffness :
+                          FullMatrix<double>(1, 1, &vol.volumetric_factor),
+                        copy);
         if (predicted)
           record_pressure_linearisation(scratch,
                                         copy.cell_index,
@@ -346,6 +357,44 @@ namespace RestShape
   }
 
   void
+  ForwardProblem::coupling_rows(ScratchData              &scratch,
+                                const double              fraction,
+                                const FullMatrix<double> &stiffness,
+                                CopyData                 &copy) const
+  {
+    // The cell's volumetric stiffness sum_ab K_ab G_a G_b^T as a sum of
+    // outer products: K = Q diag(lambda) Q^T, rows sum_a Q_ab G_a.
+    const unsigned int n_modes = stiffness.m();
+    const unsigned int n       = copy.dofs.size();
+    copy.coupling_rows.assign(n_modes * n, 0.);
+    copy.coupling_factors.assign(n_modes, 0.);
+    FullMatrix<double> Q(n_modes, n_modes);
+    if (n_modes == 1)
+      {
+        Q(0, 0)                  = 1;
+        copy.coupling_factors[0] = fraction * stiffness(0, 0);
+      }
+    else
+      {
+        LAPACKFullMatrix<double> K(n_modes);
+        K                    = stiffness;
+        const double   bound = 1 + 2 * stiffness.frobenius_norm();
+        Vector<double> lambda;
+        K.compute_eigenvalues_symmetric(-bound, bound, 0, lambda, Q);
+        for (unsigned int b = 0; b < lambda.size(); ++b)
+          copy.coupling_factors[b] = fraction * lambda[b];
+        copy.coupling_factors.resize(lambda.size());
+      }
+    for (unsigned int a = 0; a < n_modes; ++a)
+      {
+        scratch.elastic.volume_gradient_in_dof_order(scratch.g_local, a);
+        for (unsigned int b = 0; b < copy.coupling_factors.size(); ++b)
+          for (unsigned int i = 0; i < n; ++i)
+            copy.coupling_rows[b * n + i] += Q(a, b) * scratch.g_local[i];
+      }
+  }
+
+  void
   ForwardProblem::record_pressure_linearisation(ScratchData       &scratch,
                                                 const unsigned int cell,
                                                 const double      *pressures,
@@ -407,6 +456,7 @@ namespace RestShape
       {
         tangent    = 0;
         rhs_buffer = 0;
+        pressure_coupling.clear();
       }
     for (const auto &[lookup, constraints] :
          {std::pair(&lookup_hanging, &discretization_.hanging_constraints()),
@@ -457,6 +507,12 @@ namespace RestShape
                                    c.dofs,
                                    c.local,
                                    magnitude_buffer);
+        if (matrix && records_coupling)
+          for (unsigned int r = 0; r < c.coupling_factors.size(); ++r)
+            pressure_coupling.add(c.dofs,
+                                  &c.coupling_rows[r * c.dofs.size()],
+                                  c.coupling_factors[r],
+                                  constraints_newton);
         if (matrix)
           scatter.add(c.cell_index,
                       lookup_newton,
@@ -480,8 +536,13 @@ namespace RestShape
       1;
     if (matrix && valid_everywhere && parameters.discretization.nodal_pressure)
       {
-        nodal_volumes.add_stiffness(
-          d_buffer, material_table, constraints_newton, tangent, rhs_buffer);
+        nodal_volumes.add_stiffness(d_buffer,
+                                    material_table,
+                                    constraints_newton,
+                                    tangent,
+                                    rhs_buffer,
+                                    records_coupling ? &pressure_coupling :
+                                                       nullptr);
         nodal_volumes.record_linearisation(d_buffer, material_table);
       }
     const auto finish = [](BufferType &buffer, VectorType &v) {
@@ -495,6 +556,9 @@ namespace RestShape
       {
         tangent.compress(VectorOperation::add);
         finish(rhs_buffer, rhs_newton);
+        if (records_coupling)
+          pressure_coupling.finish(discretization_.locally_owned_dofs(),
+                                   discretization_.communicator());
       }
     total_energy = Utilities::MPI::sum(energy, discretization_.communicator());
     if (valid_everywhere)

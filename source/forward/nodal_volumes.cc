@@ -355,7 +355,8 @@ namespace RestShape
                               const MaterialTable             &materials,
                               const AffineConstraints<double> &constraints,
                               TrilinosWrappers::SparseMatrix  &tangent,
-                              BufferType                      &rhs) const
+                              BufferType                      &rhs,
+                              PressureCoupling                *coupling) const
   {
     std::vector<types::global_dof_index> patch;
     std::vector<double>                  g;
@@ -386,6 +387,15 @@ namespace RestShape
         const Cell  &first = cells[patches[s].front()];
         const double factor =
           vertex(first, vertex_of(first, owned_vertex[s]), materials).stiffness;
+        if (coupling != nullptr)
+          {
+            // (A vertex between labels: those of its first cell.)
+            const MaterialLaw &law = materials.law(first.label);
+            coupling->add(patch,
+                          g.data(),
+                          coupled_fraction(law.mu, law.bulk_modulus) * factor,
+                          constraints);
+          }
         if (std::none_of(patch.begin(), patch.end(), [&](const auto i) {
               return constraints.is_constrained(i);
             }))

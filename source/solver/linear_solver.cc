@@ -14,7 +14,9 @@
 #include <Teuchos_ParameterList.hpp>
 #include <dlfcn.h>
 #include <restshape/base/input_error.h>
+#include <restshape/solver/block_preconditioner.h>
 #include <restshape/solver/linear_solver.h>
+#include <restshape/solver/pressure_coupling.h>
 #include <restshape/solver/symmetric_mumps.h>
 
 #include <algorithm>
@@ -73,6 +75,32 @@ namespace RestShape
   LinearSolver::set_rigid_body_modes(std::vector<std::vector<double>> modes)
   {
     rigid_body_modes = std::move(modes);
+  }
+
+  void
+  LinearSolver::set_pressure_coupling(const PressureCoupling *c)
+  {
+    coupling = c;
+  }
+
+  bool
+  LinearSolver::uses_block() const
+  {
+    return coupling != nullptr && coupling->n_global() > 0;
+  }
+
+  const MatrixType &
+  LinearSolver::amg_target(const MatrixType &A)
+  {
+    if (!uses_block())
+      return A;
+    coupling->displacement_block(A, displacement_block);
+    block_diagonal.reinit(A.locally_owned_domain_indices(),
+                          A.get_mpi_communicator());
+    for (const auto i : block_diagonal.locally_owned_elements())
+      block_diagonal[i] = displacement_block.diag_element(i);
+    block_diagonal.compress(VectorOperation::insert);
+    return displacement_block;
   }
 
   void
@@ -243,7 +271,9 @@ namespace RestShape
     last_matrix     = nullptr;
     amg.reset(); // before its null space
     null_space.reset();
+    displacement_block.clear();
     amg_matrix                = nullptr;
+    amg_built_on              = nullptr;
     amg_iterations_per_decade = 0;
     amg_stale                 = false;
 #ifdef __GLIBC__
@@ -303,9 +333,14 @@ namespace RestShape
       switch (parameters.amg_update)
         {
           case AmgUpdate::reuse_aggregates:
-            // Same sparsity pattern, new values: keep the aggregates.
-            amg->reinit();
-            return true;
+            // Same sparsity pattern, new values: keep the aggregates (of
+            // the same displacement block object, refilled in place).
+            if (&amg_target(A).trilinos_matrix() == amg_built_on)
+              {
+                amg->reinit();
+                return true;
+              }
+            break;
           case AmgUpdate::lagged:
             if (!amg_stale)
               return false;
@@ -321,9 +356,10 @@ namespace RestShape
     data.smoother_sweeps       = 2;
     data.aggregation_threshold = parameters.amg_aggregation_threshold;
 
+    const MatrixType                   &target = amg_target(A);
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;
-    data.set_parameters(list, unused, A.trilinos_matrix());
+    data.set_parameters(list, unused, target.trilinos_matrix());
 
     // ML's name for the prolongator smoothing: 4/3 by default, 0 for plain
     // aggregation.
@@ -334,7 +370,7 @@ namespace RestShape
     // refuses a multivector of no vectors.
     if (!rigid_body_modes.empty())
       {
-        const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+        const Epetra_Map &map = target.trilinos_matrix().DomainMap();
         null_space =
           std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
         for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
@@ -345,9 +381,10 @@ namespace RestShape
         list.set("null space: vectors", null_space->Values());
       }
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(A.trilinos_matrix(), list);
-    amg_matrix = &A.trilinos_matrix();
-    amg_stale  = false;
+    amg->initialize(target.trilinos_matrix(), list);
+    amg_matrix   = &A.trilinos_matrix();
+    amg_built_on = &target.trilinos_matrix();
+    amg_stale    = false;
     return true;
   }
 
@@ -421,19 +458,30 @@ namespace RestShape
     return control.last_step() + run_krylov(A, x, b, target);
   }
 
+  BlockPreconditioner
+  LinearSolver::make_preconditioner()
+  {
+    if (!uses_block())
+      return BlockPreconditioner(*amg, nullptr, inverse_schur);
+    inverse_schur = coupling->inverse_schur_diagonal(block_diagonal);
+    return BlockPreconditioner(*amg, coupling, inverse_schur);
+  }
+
   bool
   LinearSolver::run_cg(const MatrixType &A,
                        VectorType       &x,
                        const VectorType &b,
                        SolverControl    &control)
   {
+    const BlockPreconditioner preconditioner = make_preconditioner();
+    const std::string         amg_name = uses_block() ? "block AMG" : "AMG";
     try
       {
         if (symmetric)
           {
             SolverCG<VectorType> cg(control);
-            cg.solve(A, x, b, *amg);
-            last_method = "CG+AMG";
+            cg.solve(A, x, b, preconditioner);
+            last_method = "CG+" + amg_name;
           }
         else
           {
@@ -441,8 +489,8 @@ namespace RestShape
               control,
               SolverGMRES<VectorType>::AdditionalData(200,
                                                       right_preconditioning));
-            gmres.solve(A, x, b, *amg);
-            last_method = "GMRES+AMG";
+            gmres.solve(A, x, b, preconditioner);
+            last_method = "GMRES+" + amg_name;
           }
         return true;
       }
@@ -486,7 +534,7 @@ namespace RestShape
         SolverGMRES<VectorType> gmres(
           gmres_control,
           SolverGMRES<VectorType>::AdditionalData(200, right_preconditioning));
-        gmres.solve(A, x, b, *amg);
+        gmres.solve(A, x, b, make_preconditioner());
       }
     catch (const SolverControl::NoConvergence &exc)
       {
@@ -496,7 +544,7 @@ namespace RestShape
                                     exc.last_residual) +
                             "; try Linear solver = direct");
       }
-    last_method = "GMRES+AMG";
+    last_method = uses_block() ? "GMRES+block AMG" : "GMRES+AMG";
     return control.last_step() + gmres_control.last_step();
   }
 } // namespace RestShape

@@ -91,6 +91,24 @@ namespace RestShape
       "smoothed by one damped Jacobi step): the fewest CG iterations, for "
       "when memory is not the limit.");
     prm.declare_entry(
+      "Mixed preconditioner",
+      "condensed",
+      Patterns::Selection("block|condensed"),
+      "cg-amg with the mixed formulation only. condensed: AMG on the "
+      "condensed tangent (the pressures eliminated), whose volumetric "
+      "stiffness K weakens it as K/mu grows. block: CG on the same system, "
+      "preconditioned by the block factorisation of the uncondensed one "
+      "(displacement and pressure): AMG on the displacement block, which "
+      "keeps a bulk modulus of one shear modulus, and a diagonal "
+      "approximation of the pressure Schur complement; two AMG cycles per "
+      "CG iteration. Measured (doc/benchmarks.md, section 18): on the Lame "
+      "shell with P2-P0 block needs 0.30 of the CG iterations and 0.69 of "
+      "the time at nu = 0.4999, 0.14 and 0.34 at 0.49999; on the brain "
+      "(prm/brain_in_vivo.prm) it is slower at every nu and element (P2-P0 "
+      "at 0.4999: 2.4 times the time), and on P1 with the averaged nodal "
+      "pressure, which is not inf-sup stable, it needs 4 to 16 times the "
+      "iterations; hence the default.");
+    prm.declare_entry(
       "Tangent shift",
       "0",
       Patterns::Double(0, 1),
@@ -182,6 +200,9 @@ namespace RestShape
                                                             AmgUpdate::rebuild;
     amg_aggregation_threshold = prm.get_double("AMG aggregation threshold");
     amg_smoothed_aggregation  = prm.get("AMG prolongator") == "smoothed";
+    mixed_preconditioner      = prm.get("Mixed preconditioner") == "block" ?
+                                  MixedPreconditioner::block :
+                                  MixedPreconditioner::condensed;
     tangent_shift             = prm.get_double("Tangent shift");
     max_load_step_halvings    = prm.get_integer("Maximum load step halvings");
     initial_load_steps        = prm.get_integer("Initial load steps");

@@ -39,6 +39,7 @@
 #include <restshape/solver/linear_solver.h>
 #include <restshape/solver/newton_solver.h>
 #include <restshape/solver/newton_system.h>
+#include <restshape/solver/pressure_coupling.h>
 #include <restshape/solver/tangent_strategy.h>
 
 #include <algorithm>
@@ -370,6 +371,15 @@ namespace RestShape
                                   const unsigned int cell,
                                   const double      *pressures,
                                   const double      *derivatives) const;
+    /// The cell's condensed pressure unknowns for PressureCoupling: its
+    /// volumetric stiffness sum_ab @p stiffness_ab G_a G_b^T (the volume
+    /// gradients in @p scratch's ElasticCell) as outer products, of which
+    /// the pressure block takes @p fraction (coupled_fraction()).
+    void
+    coupling_rows(ScratchData                      &scratch,
+                  const double                      fraction,
+                  const dealii::FullMatrix<double> &stiffness,
+                  CopyData                         &copy) const;
 
     const ForwardParameters    &parameters;
     Discretization              discretization_;
@@ -425,6 +435,10 @@ namespace RestShape
     LoadState   current_load;
     /// body_force_varies(current_load), set at each assembly.
     bool current_body_force_varies = false;
+    /// Whether the tangent assemblies keep the condensed pressure unknowns
+    /// (pressure_coupling) for the block preconditioner: set at setup.
+    bool             records_coupling = false;
+    PressureCoupling pressure_coupling;
 
     LoadSet load_set; // setup_load_terms()
 

@@ -22,6 +22,7 @@
 #include <restshape/base/linear_algebra_types.h>
 #include <restshape/forward/cell_pressures.h>
 #include <restshape/material/material_table.h>
+#include <restshape/solver/pressure_coupling.h>
 
 #include <array>
 #include <map>
@@ -109,13 +110,15 @@ namespace RestShape
     }
 
     /// tangent += sum_L V_nL U_L''(J_n) / V_n^2 g_n g_n^T (g_n = dv_n/dd)
-    /// for every locally owned vertex, through @p constraints.
+    /// for every locally owned vertex, through @p constraints; each vertex
+    /// also into @p coupling, if given (the block preconditioner's).
     void
     add_stiffness(const BufferType                        &d,
                   const MaterialTable                     &materials,
                   const dealii::AffineConstraints<double> &constraints,
                   dealii::TrilinosWrappers::SparseMatrix  &tangent,
-                  BufferType                              &rhs) const;
+                  BufferType                              &rhs,
+                  PressureCoupling *coupling = nullptr) const;
 
 
   private:

@@ -57,6 +57,8 @@ namespace RestShape
     const dealii::types::global_dof_index factorised_unknowns);
 
   class SymmetricMumps;
+  class PressureCoupling;
+  class BlockPreconditioner;
 
   class LinearSolver
   {
@@ -75,6 +77,15 @@ namespace RestShape
      */
     void
     set_rigid_body_modes(std::vector<std::vector<double>> modes);
+
+    /**
+     * The pressure unknowns the matrices of the mixed formulation have
+     * condensed (nullptr: none), as the assembly of each matrix leaves
+     * them. CG + AMG then builds its AMG on the displacement block and
+     * preconditions with the block factorisation (BlockPreconditioner).
+     */
+    void
+    set_pressure_coupling(const PressureCoupling *coupling);
 
     /// Whether the matrices are symmetric (default): the Krylov method is
     /// then CG, otherwise GMRES.
@@ -195,8 +206,21 @@ namespace RestShape
     };
     bool
     setup_amg(const MatrixType &A, const AmgSetup how);
+    /// Whether the AMG works on the displacement block of a mixed system.
+    bool
+    uses_block() const;
+    /// The matrix the AMG is built on: A, or its displacement block
+    /// (computed anew).
+    const MatrixType &
+    amg_target(const MatrixType &A);
 
-    /// CG (GMRES for a non-symmetric matrix) with the current AMG under
+    /// The current AMG, in the block preconditioner with the current
+    /// pressure coupling if uses_block().
+    BlockPreconditioner
+    make_preconditioner();
+
+    /// CG (GMRES for a non-symmetric matrix) with the current AMG (in the
+    /// block preconditioner with the current pressure coupling) under
     /// @p control; false (and x = 0) if it does not converge.
     bool
     run_cg(const MatrixType      &A,
@@ -229,11 +253,20 @@ namespace RestShape
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
     std::unique_ptr<Epetra_MultiVector>                        null_space;
     const void *amg_matrix = nullptr;
+    /// The Epetra matrix the AMG was built on (A's, or the displacement
+    /// block's).
+    const void *amg_built_on = nullptr;
     /// Lagged AMG: CG iterations per decade of residual reduction in the
     /// first solve after the last build, and whether the next solve must
     /// rebuild.
     double amg_iterations_per_decade = 0;
     bool   amg_stale                 = false;
+    /// The block preconditioner's: the pressure unknowns, the displacement
+    /// block the AMG was built on and its diagonal, the inverse of the
+    /// Schur complement's diagonal approximation (of the last solve).
+    const PressureCoupling *coupling = nullptr;
+    MatrixType              displacement_block;
+    VectorType              block_diagonal, inverse_schur;
 
     const SolverParameters           parameters;
     bool                             direct_fallback_allowed = false;

@@ -48,6 +48,12 @@ namespace RestShape
     return degree > 1 ? auto_direct_dofs_quadratic : auto_direct_dofs_linear;
   }
 
+  enum class MixedPreconditioner
+  {
+    block,
+    condensed
+  };
+
   /// Solver/Watchdog steps (benchmarks/peer, doc/benchmarks.md).
   constexpr unsigned int default_watchdog_steps = 3;
 
@@ -63,11 +69,16 @@ namespace RestShape
     double amg_aggregation_threshold;
     /// Smoothed aggregation (ML's default prolongator) or plain
     /// (unsmoothed) aggregation: a third of the memory, more CG iterations.
-    bool           amg_smoothed_aggregation = false;
-    double         tangent_shift; // relative; 0: off
-    unsigned int   max_load_step_halvings;
-    unsigned int   initial_load_steps;
-    StabilityCheck check_stability = StabilityCheck::automatic;
+    bool amg_smoothed_aggregation = false;
+    /// Solver/Mixed preconditioner: with cg-amg and a mixed formulation,
+    /// AMG on the displacement block of the uncondensed system inside the
+    /// block factorisation (BlockPreconditioner), or on the condensed
+    /// tangent (the default).
+    MixedPreconditioner mixed_preconditioner = MixedPreconditioner::condensed;
+    double              tangent_shift; // relative; 0: off
+    unsigned int        max_load_step_halvings;
+    unsigned int        initial_load_steps;
+    StabilityCheck      check_stability = StabilityCheck::automatic;
     /// Solver/Direct factorisation = ldlt: MUMPS's LDL^T (SymmetricMumps)
     /// for symmetric tangents on one process; false: its LU (Amesos).
     bool symmetric_factorisation = false;
