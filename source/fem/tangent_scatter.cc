@@ -1,5 +1,5 @@
 #include <Epetra_CrsMatrix.h>
-#include <restshape/fem/compressed_row.h>
+#include <restshape/base/compressed_row.h>
 #include <restshape/fem/element_limits.h>
 #include <restshape/fem/tangent_scatter.h>
 

@@ -5,7 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <restshape/fem/outer_product.h>
+#include <restshape/base/outer_product.h>
 #include <restshape/forward/nodal_volumes.h>
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <Epetra_CrsMatrix.h>
-#include <restshape/fem/outer_product.h>
+#include <restshape/base/outer_product.h>
 #include <restshape/solver/pressure_coupling.h>
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // A dense symmetric outer product added into a Trilinos matrix: the
 // stiffness factor g g^T of a volume (a vertex's averaged nodal pressure,
 // a pressure unknown of the mixed formulation) over the DoFs it depends on.
-#ifndef restshape_fem_outer_product_h
-#define restshape_fem_outer_product_h
+#ifndef restshape_base_outer_product_h
+#define restshape_base_outer_product_h
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 

@@ -1,6 +1,6 @@
 #include <Epetra_CrsMatrix.h>
-#include <restshape/fem/compressed_row.h>
-#include <restshape/fem/outer_product.h>
+#include <restshape/base/compressed_row.h>
+#include <restshape/base/outer_product.h>
 
 #include <algorithm>
 #include <utility>

@@ -2,8 +2,8 @@
 // search that lets TangentScatter and the averaged nodal pressure add
 // into a Trilinos matrix's value array directly, instead of through
 // Epetra's map lookup and search per entry.
-#ifndef restshape_fem_compressed_row_h
-#define restshape_fem_compressed_row_h
+#ifndef restshape_base_compressed_row_h
+#define restshape_base_compressed_row_h
 
 #include <algorithm>
 #include <utility>
