@@ -59,3 +59,11 @@ require_valgrind() {
     exit 77
   fi
 }
+
+# bulk_modulus MU NU: the bulk modulus (Pa) of a law of shear modulus MU
+# (Pa) and Poisson's ratio NU.
+bulk_modulus() { echo "2 * $1 * (1 + $2) / (3 * (1 - 2 * $2))" | bc -l; }
+
+# The --set arguments that switch every scenario of a brain scene off.
+scenario_off=(--set "Scenario prone/Enabled=false" --set "Scenario drained/Enabled=false"
+  --set "Scenario craniotomy/Enabled=false" --set "Scenario/Enabled=false")

@@ -61,11 +61,9 @@ run() {
 }
 brain_args() { # nu inverse: the bulk modulus for the cerebrum's nu
   local K
-  K=$(echo "2 * $mu_brain * (1 + $1) / (3 * (1 - 2 * $1))" | bc -l)
+  K=$(bulk_modulus "$mu_brain" "$1")
   echo "--set|Materials/Bulk modulus=$K|--set|Inverse problem/Enabled=$2"
 }
-scenario_off=(--set "Scenario prone/Enabled=false" --set "Scenario drained/Enabled=false"
-  --set "Scenario craniotomy/Enabled=false" --set "Scenario/Enabled=false")
 
 : >"$out/table.md"
 echo "machine: $machine_text; one thread each" | tee -a "$out/table.md"

@@ -34,8 +34,6 @@ mkdir -p "$out"
 machine_text=$(machine)
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
 mu_brain=670
-scenario_off=(--set "Scenario prone/Enabled=false" --set "Scenario drained/Enabled=false"
-  --set "Scenario craniotomy/Enabled=false" --set "Scenario/Enabled=false")
 
 # run NAME PRECONDITIONER PRM ARGS...: one line of the table.
 run() {
@@ -90,7 +88,7 @@ fi
 done
 for degree in 1 2; do
   for nu in 0.4977 0.4999; do
-    K=$(echo "2 * $mu_brain * (1 + $nu) / (3 * (1 - 2 * $nu))" | bc -l)
+    K=$(bulk_modulus "$mu_brain" "$nu")
     for inverse in false true; do
       name=brain_P${degree}_forward_nu$nu
       $inverse && name=brain_P${degree}_inverse_nu$nu

@@ -329,13 +329,16 @@ namespace RestShape
       scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
     const bool same_matrix =
       amg != nullptr && amg_matrix == &A.trilinos_matrix();
+    // The matrix the AMG is built on, once computed.
+    const MatrixType *target = nullptr;
     if (same_matrix && how == AmgSetup::as_configured)
       switch (parameters.amg_update)
         {
           case AmgUpdate::reuse_aggregates:
             // Same sparsity pattern, new values: keep the aggregates (of
             // the same displacement block object, refilled in place).
-            if (&amg_target(A).trilinos_matrix() == amg_built_on)
+            target = &amg_target(A);
+            if (&target->trilinos_matrix() == amg_built_on)
               {
                 amg->reinit();
                 return true;
@@ -356,10 +359,11 @@ namespace RestShape
     data.smoother_sweeps       = 2;
     data.aggregation_threshold = parameters.amg_aggregation_threshold;
 
-    const MatrixType                   &target = amg_target(A);
+    if (target == nullptr)
+      target = &amg_target(A);
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;
-    data.set_parameters(list, unused, target.trilinos_matrix());
+    data.set_parameters(list, unused, target->trilinos_matrix());
 
     // ML's name for the prolongator smoothing: 4/3 by default, 0 for plain
     // aggregation.
@@ -370,7 +374,7 @@ namespace RestShape
     // refuses a multivector of no vectors.
     if (!rigid_body_modes.empty())
       {
-        const Epetra_Map &map = target.trilinos_matrix().DomainMap();
+        const Epetra_Map &map = target->trilinos_matrix().DomainMap();
         null_space =
           std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
         for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
@@ -381,9 +385,9 @@ namespace RestShape
         list.set("null space: vectors", null_space->Values());
       }
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(target.trilinos_matrix(), list);
+    amg->initialize(target->trilinos_matrix(), list);
     amg_matrix   = &A.trilinos_matrix();
-    amg_built_on = &target.trilinos_matrix();
+    amg_built_on = &target->trilinos_matrix();
     amg_stale    = false;
     return true;
   }
