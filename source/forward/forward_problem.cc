@@ -307,7 +307,7 @@ namespace RestShape
     std::copy(w.begin(), w.end(), w_now.begin());
     d_now.update_ghost_values();
     w_now.update_ghost_values();
-    nodal_volumes.update(d_now, w_now);
+    nodal_volumes.update(d_now, w_now, material_table);
   }
 
   double
@@ -332,7 +332,7 @@ namespace RestShape
   ForwardProblem::pressure_points() const
   {
     if (parameters.discretization.nodal_pressure)
-      return nodal_volumes.pressure_points(material_table);
+      return nodal_volumes.pressure_points();
     return cell_pressures.last();
   }
 

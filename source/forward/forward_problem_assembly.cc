@@ -466,7 +466,7 @@ namespace RestShape
                       &constraints_newton))})
       lookup->reinit(*constraints, *raw_buffer.get_partitioner());
     if (parameters.discretization.nodal_pressure)
-      nodal_volumes.update(d_buffer, w_buffer);
+      nodal_volumes.update(d_buffer, w_buffer, material_table);
     current_body_force_varies = load_set.body_force_varies(current_load);
     bool          all_valid   = true;
     double        energy      = 0;
@@ -543,7 +543,7 @@ namespace RestShape
                                     rhs_buffer,
                                     records_coupling ? &pressure_coupling :
                                                        nullptr);
-        nodal_volumes.record_linearisation(d_buffer, material_table);
+        nodal_volumes.record_linearisation(d_buffer);
       }
     const auto finish = [](BufferType &buffer, VectorType &v) {
       buffer.compress(VectorOperation::add);

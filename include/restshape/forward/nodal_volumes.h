@@ -52,9 +52,12 @@ namespace RestShape
 
     /// The vertices' rest volumes per label, and their current ones, at
     /// the state (d, w): the rest position X + w, the current one X + d
-    /// (ghosted). Collective.
+    /// (ghosted), and their volume ratios, pressures and stiffnesses
+    /// under the laws of @p materials. Collective.
     void
-    update(const BufferType &d, const BufferType &w);
+    update(const BufferType    &d,
+           const BufferType    &w,
+           const MaterialTable &materials);
 
     /// The vertices' pressure sum_L V_nL U_L'(J_n) / V_n averaged over a
     /// cell (Pa) and the cell's share of the volumetric energy (J); valid
@@ -86,7 +89,7 @@ namespace RestShape
      * second-order change of volume. Collective.
      */
     void
-    record_linearisation(const BufferType &d, const MaterialTable &materials);
+    record_linearisation(const BufferType &d);
     /// The state jumped (a new rest shape, a load step's start): the
     /// tangent takes the condensed pressure until the next record.
     void
@@ -96,10 +99,10 @@ namespace RestShape
     }
 
     /// Each vertex's volume ratio, pressure sum_L V_nL U_L'(J_n) / V_n and
-    /// its derivative in J_n at the last update(), at the local index of
-    /// its x-DoF (the other entries zero), without offsets.
+    /// its derivative in J_n at the last update() (its laws), at the local
+    /// index of its x-DoF (the other entries zero), without offsets.
     std::vector<PressurePoint>
-    pressure_points(const MaterialTable &materials) const;
+    pressure_points() const;
     /// The vertices' pressures are shifted by @p offsets (Pa, indexed as
     /// pressure_points(); empty: none), for the three-field tangent of
     /// the direct inverse (ForwardProblem::set_pressure_offsets()).
@@ -171,13 +174,18 @@ namespace RestShape
       double predicted = 0; // the tangent's pressure (Pa)
       bool   valid     = false;
     };
-    /// Of @p cell's vertex @p v.
+    /// Of @p cell's vertex @p v, at the last update().
     /// (The pressure with its offset, if @p shifted.)
     Vertex
-    vertex(const Cell          &cell,
-           const unsigned int   v,
-           const MaterialTable &materials,
-           const bool           shifted = true) const;
+    vertex(const Cell        &cell,
+           const unsigned int v,
+           const bool         shifted = true) const;
+    /// The vertex whose x- and y-DoFs have the local indices @p x and
+    /// @p y, from the volumes of update(), without offset or prediction.
+    Vertex
+    evaluate_vertex(const unsigned int   x,
+                    const unsigned int   y,
+                    const MaterialTable &materials) const;
 
     std::vector<Cell> cells;   // owned and ghost
     std::vector<int>  of_cell; // active index -> cells, or -1
@@ -188,6 +196,10 @@ namespace RestShape
     // Per label, of that label's cells: at a vertex's x-DoF its rest
     // volume, at its y-DoF its current one (m^3).
     std::map<Label, BufferType> volumes;
+    // Per vertex (at its x-DoF's local index, owned and ghost) its
+    // evaluate_vertex() at the last update(): the cells around a vertex
+    // all read it.
+    std::vector<Vertex> evaluated;
     // The linearisation of record_linearisation(): per cell (of cells)
     // its volume gradient and its DoFs' values of d, per vertex (at its
     // x-DoF's local index) its pressure and stiffness; at update() the
