@@ -9,6 +9,37 @@ namespace RestShape
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Row @p i of factor g g^T through Epetra's map lookup and search per
+    /// entry: where the matrix's compressed rows are not at hand.
+    void
+    add_row(const double                                factor,
+            const unsigned int                          i,
+            const std::vector<types::global_dof_index> &dofs,
+            const std::vector<double>                  &g,
+            TrilinosWrappers::SparseMatrix             &tangent)
+    {
+      const unsigned int  n = dofs.size();
+      std::vector<double> row(n);
+      for (unsigned int j = 0; j < n; ++j)
+        row[j] = factor * g[i] * g[j];
+      tangent.add(dofs[i], n, dofs.data(), row.data(), false, false);
+    }
+
+    /// Whether the local rows @p r and @p other (>= 0) have the same
+    /// columns.
+    bool
+    same_columns(const int *offsets, const int *indices, int r, int other)
+    {
+      return offsets[r + 1] - offsets[r] ==
+               offsets[other + 1] - offsets[other] &&
+             std::equal(indices + offsets[r],
+                        indices + offsets[r + 1],
+                        indices + offsets[other]);
+    }
+  } // namespace
+
   void
   add_outer_product(const double                                factor,
                     const std::vector<types::global_dof_index> &dofs,
@@ -38,15 +69,10 @@ namespace RestShape
         columns[j] = {matrix.LCID(static_cast<int>(dofs[j])), j};
         direct     = columns[j].first >= 0;
       }
-    std::vector<double> row(n);
     if (!direct)
       {
         for (unsigned int i = 0; i < n; ++i)
-          {
-            for (unsigned int j = 0; j < n; ++j)
-              row[j] = factor * g[i] * g[j];
-            tangent.add(dofs[i], n, dofs.data(), row.data(), false, false);
-          }
+          add_row(factor, i, dofs, g, tangent);
         return;
       }
     // g in the columns' sorted order, each column then numbered by its
@@ -65,14 +91,8 @@ namespace RestShape
     int found = -1;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const int  r = matrix.LRID(static_cast<int>(dofs[i]));
-        const bool same_columns =
-          r >= 0 && found >= 0 &&
-          offsets[r + 1] - offsets[r] == offsets[found + 1] - offsets[found] &&
-          std::equal(indices + offsets[r],
-                     indices + offsets[r + 1],
-                     indices + offsets[found]);
-        if (!same_columns)
+        const int r = matrix.LRID(static_cast<int>(dofs[i]));
+        if (r < 0 || found < 0 || !same_columns(offsets, indices, r, found))
           {
             found = -1;
             if (r < 0 || !find_in_row(columns.data(),
@@ -81,9 +101,7 @@ namespace RestShape
                                       indices + offsets[r + 1],
                                       place.data()))
               {
-                for (unsigned int j = 0; j < n; ++j)
-                  row[j] = factor * g[i] * g[j];
-                tangent.add(dofs[i], n, dofs.data(), row.data(), false, false);
+                add_row(factor, i, dofs, g, tangent);
                 continue;
               }
             found = r;
