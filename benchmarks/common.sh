@@ -49,6 +49,30 @@ seconds() {
   awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f\n", b - a }'
 }
 
+# timed_run LOG COMMAND...: run it with its output into LOG; sets
+# run_code (its exit code) and run_seconds (its wall seconds, "%.1f"), and
+# does not fail when it fails.
+timed_run() {
+  local log=$1 start end
+  shift
+  start=$(date +%s.%N)
+  "$@" >"$log" 2>&1
+  run_code=$?
+  end=$(date +%s.%N)
+  run_seconds=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f\n", b - a }')
+}
+
+# solve_cells DIR: the table cells "Newton steps | direct inverse: Newton
+# steps / Jacobian products | CG iterations per Newton step" of a run's
+# DIR/summary.json.
+solve_cells() {
+  local s=$1/summary.json
+  printf '%s | %s / %s | %s' "$(value newton_iterations "$s")" \
+    "$(value direct_inverse_newton_steps "$s")" \
+    "$(value direct_inverse_jacobian_products "$s")" \
+    "$(value linear_iterations_per_newton_step "$s")"
+}
+
 # median: the median of the numbers on stdin (one line, space-separated).
 median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 

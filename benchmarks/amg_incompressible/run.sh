@@ -42,22 +42,15 @@ mu_brain=670
 run() {
   local name=$1 solver=$2 prm=$3
   shift 3
-  local dir=$out/$name-$solver start end
-  start=$(date +%s.%N)
-  "$exe" --set "Output/Directory=$dir" --set "Solver/Linear solver=$solver" \
-    --set "Solver/Check stability=false" --set "Output/Write VTU=false" "$@" "$prm" \
-    >"$dir.log" 2>&1
-  local code=$?
-  end=$(date +%s.%N)
+  local dir=$out/$name-$solver
+  timed_run "$dir.log" "$exe" --set "Output/Directory=$dir" --set "Solver/Linear solver=$solver" \
+    --set "Solver/Check stability=false" --set "Output/Write VTU=false" "$@" "$prm"
   local fallback=no
   grep -q "the direct solver takes over" "$dir.log" && fallback="yes, direct took over"
   grep -q "restshape: error: .*the iterative solver did not converge" "$dir.log" &&
     fallback="yes, the run stopped"
-  printf '| %s | %s | %s | %s | %s | %s | %s | %.1f |\n' "$name" "$solver" "$code" \
-    "$(value newton_iterations "$dir/summary.json")" \
-    "$(value direct_inverse_newton_steps "$dir/summary.json") / $(value direct_inverse_jacobian_products "$dir/summary.json")" \
-    "$(value linear_iterations_per_newton_step "$dir/summary.json")" "$fallback" \
-    "$(echo "$end - $start" | bc)" | tee -a "$out/table.md"
+  printf '| %s | %s | %s | %s | %s | %s |\n' "$name" "$solver" "$run_code" \
+    "$(solve_cells "$dir")" "$fallback" "$run_seconds" | tee -a "$out/table.md"
 }
 brain_args() { # nu inverse: the bulk modulus for the cerebrum's nu
   local K

@@ -39,19 +39,13 @@ mu_brain=670
 run() {
   local name=$1 pre=$2 prm=$3
   shift 3
-  local dir=$out/$name-$pre start end
-  start=$(date +%s.%N)
-  "$exe" --set "Output/Directory=$dir" --set "Solver/Linear solver=cg-amg" \
+  local dir=$out/$name-$pre
+  timed_run "$dir.log" "$exe" --set "Output/Directory=$dir" --set "Solver/Linear solver=cg-amg" \
     --set "Discretization/Formulation=mixed" \
     --set "Solver/Mixed preconditioner=$pre" --set "Solver/Check stability=false" \
-    --set "Output/Write VTU=false" --set "Output/Write nodal CSV=false" "$@" "$prm" >"$dir.log" 2>&1
-  local code=$?
-  end=$(date +%s.%N)
-  printf '| %s | %s | %s | %s | %s | %s | %.1f |\n' "$name" "$pre" "$code" \
-    "$(value newton_iterations "$dir/summary.json")" \
-    "$(value direct_inverse_newton_steps "$dir/summary.json") / $(value direct_inverse_jacobian_products "$dir/summary.json")" \
-    "$(value linear_iterations_per_newton_step "$dir/summary.json")" \
-    "$(echo "$end - $start" | bc)" | tee -a "$out/table.md"
+    --set "Output/Write VTU=false" --set "Output/Write nodal CSV=false" "$@" "$prm"
+  printf '| %s | %s | %s | %s | %s |\n' "$name" "$pre" "$run_code" \
+    "$(solve_cells "$dir")" "$run_seconds" | tee -a "$out/table.md"
 }
 its() { value linear_iterations_per_newton_step "$out/$1/summary.json"; }
 

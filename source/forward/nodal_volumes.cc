@@ -23,6 +23,16 @@ namespace RestShape
     constexpr double vertex_share = 1.0 / vertices_per_cell;
     // The volume of a tetrahedron is a sixth of its edges' triple product.
     constexpr double tetrahedron_volume = 1.0 / 6.0;
+
+    /// Whether some DoF of @p patch is constrained in @p constraints.
+    bool
+    any_constrained(const std::vector<types::global_dof_index> &patch,
+                    const AffineConstraints<double>            &constraints)
+    {
+      return std::any_of(patch.begin(), patch.end(), [&](const auto i) {
+        return constraints.is_constrained(i);
+      });
+    }
   } // namespace
 
   void
@@ -161,9 +171,7 @@ namespace RestShape
         patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
         // Unconstrained: each row's sorted columns at once (entry by entry,
         // as AffineConstraints adds them, was two thirds of the set-up).
-        if (std::none_of(patch.begin(), patch.end(), [&](const auto i) {
-              return constraints.is_constrained(i);
-            }))
+        if (!any_constrained(patch, constraints))
           for (const auto row : patch)
             dsp.add_entries(row, patch.begin(), patch.end(), true);
         else
@@ -417,9 +425,8 @@ namespace RestShape
                   g[at - patch.begin()] += share * g_cell[i];
               }
           }
-        const Cell  &first = cells[patches[s].front()];
-        const double factor =
-          vertex(first, vertex_of(first, owned_vertex[s])).stiffness;
+        const Cell  &first  = cells[patches[s].front()];
+        const double factor = evaluated[owned_vertex[s]].stiffness;
         if (coupling != nullptr)
           {
             // (A vertex between labels: those of its first cell.)
@@ -429,9 +436,7 @@ namespace RestShape
                           coupled_fraction(law.mu, law.bulk_modulus) * factor,
                           constraints);
           }
-        if (std::none_of(patch.begin(), patch.end(), [&](const auto i) {
-              return constraints.is_constrained(i);
-            }))
+        if (!any_constrained(patch, constraints))
           add_outer_product(factor, patch, g, tangent);
         else
           {

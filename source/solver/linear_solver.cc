@@ -89,6 +89,12 @@ namespace RestShape
     return coupling != nullptr && coupling->n_global() > 0;
   }
 
+  std::string
+  LinearSolver::preconditioner_name() const
+  {
+    return uses_block() ? "block AMG" : "AMG";
+  }
+
   const MatrixType &
   LinearSolver::amg_target(const MatrixType &A)
   {
@@ -478,7 +484,7 @@ namespace RestShape
                        SolverControl    &control)
   {
     const BlockPreconditioner preconditioner = make_preconditioner();
-    const std::string         amg_name = uses_block() ? "block AMG" : "AMG";
+    const std::string         amg_name       = preconditioner_name();
     try
       {
         if (symmetric)
@@ -548,7 +554,7 @@ namespace RestShape
                                     exc.last_residual) +
                             "; try Linear solver = direct");
       }
-    last_method = uses_block() ? "GMRES+block AMG" : "GMRES+AMG";
+    last_method = "GMRES+" + preconditioner_name();
     return control.last_step() + gmres_control.last_step();
   }
 } // namespace RestShape

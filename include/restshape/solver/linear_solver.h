@@ -209,6 +209,9 @@ namespace RestShape
     /// Whether the AMG works on the displacement block of a mixed system.
     bool
     uses_block() const;
+    /// "block AMG" or "AMG", as the Newton lines name the preconditioner.
+    std::string
+    preconditioner_name() const;
     /// The matrix the AMG is built on: A, or its displacement block
     /// (computed anew).
     const MatrixType &
