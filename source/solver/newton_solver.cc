@@ -524,7 +524,12 @@ namespace RestShape
         const State state = convergence_check(
           stats, residual, reference, set_changed, corrections);
         if (state == State::converged || state == State::failed)
-          return state == State::converged;
+          {
+            // What follows is the caller's (output, error estimate), not
+            // another Newton step.
+            set_progress_phase("after the Newton solve");
+            return state == State::converged;
+          }
         if (it > max_steps)
           break;
         // Released contact constraints: the next step needs the new ones (a
