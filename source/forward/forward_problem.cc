@@ -158,7 +158,32 @@ namespace RestShape
             << std::endl;
     linear_solver->set_pressure_coupling(records_coupling ? &pressure_coupling :
                                                             nullptr);
+    splits_tangent = parameters.discretization.nodal_pressure &&
+                     linear_solver_type == LinearSolverType::cg_amg &&
+                     !records_coupling && parameters.solver.split_nodal_tangent;
+    if (splits_tangent)
+      setup_split_tangent();
+    linear_solver->set_split_tangent(splits_tangent ? &split_tangent : nullptr);
     newton_solver.setup(linear_solver.get(), linear_solver_type);
+  }
+
+  void
+  ForwardProblem::setup_split_tangent()
+  {
+    // The cells' couplings alone, as the displacement formulation's.
+    DynamicSparsityPattern narrow(discretization_.locally_relevant_dofs());
+    DoFTools::make_sparsity_pattern(discretization_.dof_handler(),
+                                    narrow,
+                                    discretization_.base_constraints(),
+                                    true);
+    SparsityTools::distribute_sparsity_pattern(
+      narrow,
+      discretization_.locally_owned_dofs(),
+      discretization_.communicator(),
+      discretization_.locally_relevant_dofs());
+    split_tangent.reinit(discretization_.locally_owned_dofs(),
+                         narrow,
+                         discretization_.communicator());
   }
 
   LinearSolverType

@@ -457,6 +457,8 @@ namespace RestShape
         tangent    = 0;
         rhs_buffer = 0;
         pressure_coupling.clear();
+        if (splits_tangent)
+          split_tangent.clear();
       }
     for (const auto &[lookup, constraints] :
          {std::pair(&lookup_hanging, &discretization_.hanging_constraints()),
@@ -520,7 +522,7 @@ namespace RestShape
                       c.cell_matrix,
                       c.cell_rhs,
                       c.dofs,
-                      tangent,
+                      splits_tangent ? split_tangent.narrow() : tangent,
                       rhs_buffer);
       },
       NoScratch(),
@@ -542,7 +544,8 @@ namespace RestShape
                                     tangent,
                                     rhs_buffer,
                                     records_coupling ? &pressure_coupling :
-                                                       nullptr);
+                                                       nullptr,
+                                    splits_tangent ? &split_tangent : nullptr);
         nodal_volumes.record_linearisation(d_buffer);
       }
     const auto finish = [](BufferType &buffer, VectorType &v) {
@@ -555,6 +558,8 @@ namespace RestShape
     if (matrix)
       {
         tangent.compress(VectorOperation::add);
+        if (splits_tangent)
+          split_tangent.finish(tangent); // tangent += the cells' matrices
         finish(rhs_buffer, rhs_newton);
         if (records_coupling)
           pressure_coupling.finish(discretization_.locally_owned_dofs(),

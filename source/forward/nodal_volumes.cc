@@ -397,7 +397,8 @@ namespace RestShape
                               const AffineConstraints<double> &constraints,
                               TrilinosWrappers::SparseMatrix  &tangent,
                               BufferType                      &rhs,
-                              PressureCoupling                *coupling) const
+                              PressureCoupling                *coupling,
+                              SplitTangent                    *split) const
   {
     std::vector<types::global_dof_index> patch;
     std::vector<double>                  g;
@@ -436,6 +437,8 @@ namespace RestShape
                           coupled_fraction(law.mu, law.bulk_modulus) * factor,
                           constraints);
           }
+        if (split != nullptr)
+          split->add_term(factor, patch, g, constraints);
         if (!any_constrained(patch, constraints))
           add_outer_product(factor, patch, g, tangent);
         else

@@ -17,6 +17,7 @@
 #include <restshape/solver/block_preconditioner.h>
 #include <restshape/solver/linear_solver.h>
 #include <restshape/solver/pressure_coupling.h>
+#include <restshape/solver/split_tangent.h>
 #include <restshape/solver/symmetric_mumps.h>
 
 #include <algorithm>
@@ -93,6 +94,26 @@ namespace RestShape
   LinearSolver::preconditioner_name() const
   {
     return uses_block() ? "block AMG" : "AMG";
+  }
+
+  void
+  LinearSolver::set_split_tangent(SplitTangent *s)
+  {
+    split = s;
+  }
+
+  bool
+  LinearSolver::uses_split(const MatrixType &A) const
+  {
+    return split != nullptr && !uses_block() && split->applies(A);
+  }
+
+  const Epetra_RowMatrix &
+  LinearSolver::amg_rows(const MatrixType &A)
+  {
+    if (uses_split(A))
+      return *split;
+    return amg_target(A).trilinos_matrix();
   }
 
   const MatrixType &
@@ -335,16 +356,16 @@ namespace RestShape
       scope = std::make_unique<TimerOutput::Scope>(*timer, "AMG set-up");
     const bool same_matrix =
       amg != nullptr && amg_matrix == &A.trilinos_matrix();
-    // The matrix the AMG is built on, once computed.
-    const MatrixType *target = nullptr;
+    // The rows the AMG is built on, once computed.
+    const Epetra_RowMatrix *target = nullptr;
     if (same_matrix && how == AmgSetup::as_configured)
       switch (parameters.amg_update)
         {
           case AmgUpdate::reuse_aggregates:
             // Same sparsity pattern, new values: keep the aggregates (of
             // the same displacement block object, refilled in place).
-            target = &amg_target(A);
-            if (&target->trilinos_matrix() == amg_built_on)
+            target = &amg_rows(A);
+            if (target == amg_built_on)
               {
                 amg->reinit();
                 return true;
@@ -366,10 +387,10 @@ namespace RestShape
     data.aggregation_threshold = parameters.amg_aggregation_threshold;
 
     if (target == nullptr)
-      target = &amg_target(A);
+      target = &amg_rows(A);
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;
-    data.set_parameters(list, unused, target->trilinos_matrix());
+    data.set_parameters(list, unused, *target);
 
     // ML's name for the prolongator smoothing: 4/3 by default, 0 for plain
     // aggregation.
@@ -380,7 +401,7 @@ namespace RestShape
     // refuses a multivector of no vectors.
     if (!rigid_body_modes.empty())
       {
-        const Epetra_Map &map = target->trilinos_matrix().DomainMap();
+        const Epetra_Map &map = target->OperatorDomainMap();
         null_space =
           std::make_unique<Epetra_MultiVector>(map, rigid_body_modes.size());
         for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
@@ -391,9 +412,9 @@ namespace RestShape
         list.set("null space: vectors", null_space->Values());
       }
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(target->trilinos_matrix(), list);
+    amg->initialize(*target, list);
     amg_matrix   = &A.trilinos_matrix();
-    amg_built_on = &target->trilinos_matrix();
+    amg_built_on = target;
     amg_stale    = false;
     return true;
   }
@@ -446,6 +467,8 @@ namespace RestShape
                                   const double      relative_tolerance)
   {
     set_blas_threads_for(no_factorisation);
+    if (uses_split(A))
+      split->refresh_diagonal(); // a Newton step's shift
     const double target = relative_tolerance * b.l2_norm();
     if (setup_amg(A, AmgSetup::as_configured))
       return run_krylov(A, x, b, target);
@@ -487,7 +510,13 @@ namespace RestShape
     const std::string         amg_name       = preconditioner_name();
     try
       {
-        if (symmetric)
+        if (symmetric && uses_split(A))
+          {
+            SolverCG<VectorType> cg(control);
+            cg.solve(*split, x, b, preconditioner);
+            last_method = "CG+" + amg_name;
+          }
+        else if (symmetric)
           {
             SolverCG<VectorType> cg(control);
             cg.solve(A, x, b, preconditioner);

@@ -109,6 +109,21 @@ namespace RestShape
       "pressure, which is not inf-sup stable, it needs 4 to 16 times the "
       "iterations; hence the default.");
     prm.declare_entry(
+      "Nodal pressure product",
+      "split",
+      Patterns::Selection("split|assembled"),
+      "cg-amg with the mixed formulation of linear tetrahedra (the "
+      "averaged nodal pressure) and the condensed preconditioner only: how "
+      "CG and the finest level of the AMG multiply by the tangent. split: "
+      "the cells' matrix plus one rank-one term per vertex (its volume "
+      "stiffness), the default: on the brain (prm/brain_in_vivo.prm) the "
+      "mixed forward solve takes 0.80 of the instructions of assembled, "
+      "0.75 refined once (doc/benchmarks.md, section 13). assembled: the "
+      "assembled matrix, whose rows hold every DoF of the cells around "
+      "each vertex (about 3.5 times the cells' matrix's entries), for "
+      "comparisons. The same linear systems either way; the direct solver "
+      "always factorises the assembled matrix.");
+    prm.declare_entry(
       "Tangent shift",
       "0",
       Patterns::Double(0, 1),
@@ -192,6 +207,7 @@ namespace RestShape
                                                      LinearSolverType::automatic;
     newton_tolerance          = prm.get_double("Newton tolerance");
     max_newton_iterations     = prm.get_integer("Maximum Newton iterations");
+    split_nodal_tangent       = prm.get("Nodal pressure product") == "split";
     linear_tolerance          = prm.get_double("Linear solver tolerance");
     inexact_newton            = prm.get_bool("Inexact Newton");
     const std::string amg     = prm.get("AMG update");

@@ -40,6 +40,7 @@
 #include <restshape/solver/newton_solver.h>
 #include <restshape/solver/newton_system.h>
 #include <restshape/solver/pressure_coupling.h>
+#include <restshape/solver/split_tangent.h>
 #include <restshape/solver/tangent_strategy.h>
 
 #include <algorithm>
@@ -316,6 +317,9 @@ namespace RestShape
     /// Linear solver = auto: direct or cg-amg by the number of DoFs.
     LinearSolverType
     resolve_linear_solver() const;
+    /// The narrow matrix of split_tangent, from the cells' couplings.
+    void
+    setup_split_tangent();
     struct ScratchData;
     struct CopyData;
     struct CellVolumetric;
@@ -392,6 +396,11 @@ namespace RestShape
 
     MatrixType     tangent;
     TangentScatter scatter; // of the cells' matrices into tangent
+    // The averaged nodal pressure's tangent split for CG + AMG (set up if
+    // splits_tangent): the cells' matrices go into its narrow matrix, the
+    // vertices' terms into it and tangent, which then gets the cells' too.
+    SplitTangent split_tangent;
+    bool         splits_tangent = false;
     // The three constraint sets by the buffers' local indices (set at
     // each assembly) and the cells' local indices (set up with the DoFs).
     ConstraintLookup lookup_hanging, lookup_base, lookup_newton;

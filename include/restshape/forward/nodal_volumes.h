@@ -23,6 +23,7 @@
 #include <restshape/forward/cell_pressures.h>
 #include <restshape/material/material_table.h>
 #include <restshape/solver/pressure_coupling.h>
+#include <restshape/solver/split_tangent.h>
 
 #include <array>
 #include <map>
@@ -114,14 +115,16 @@ namespace RestShape
 
     /// tangent += sum_L V_nL U_L''(J_n) / V_n^2 g_n g_n^T (g_n = dv_n/dd)
     /// for every locally owned vertex, through @p constraints; each vertex
-    /// also into @p coupling, if given (the block preconditioner's).
+    /// also into @p coupling, if given (the block preconditioner's), and
+    /// as a term of @p split, if given.
     void
     add_stiffness(const BufferType                        &d,
                   const MaterialTable                     &materials,
                   const dealii::AffineConstraints<double> &constraints,
                   dealii::TrilinosWrappers::SparseMatrix  &tangent,
                   BufferType                              &rhs,
-                  PressureCoupling *coupling = nullptr) const;
+                  PressureCoupling                        *coupling = nullptr,
+                  SplitTangent *split = nullptr) const;
 
 
   private:

@@ -18,6 +18,7 @@
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
 class Epetra_MultiVector;
+class Epetra_RowMatrix;
 
 namespace RestShape
 {
@@ -59,6 +60,7 @@ namespace RestShape
   class SymmetricMumps;
   class PressureCoupling;
   class BlockPreconditioner;
+  class SplitTangent;
 
   class LinearSolver
   {
@@ -86,6 +88,16 @@ namespace RestShape
      */
     void
     set_pressure_coupling(const PressureCoupling *coupling);
+
+    /**
+     * The averaged nodal pressure's tangent as its narrow matrix and
+     * rank-one terms (nullptr: none), as each assembly leaves it. CG + AMG
+     * (without the block preconditioner) then applies the matrices it
+     * applies (SplitTangent::applies()) through it, in CG and in ML's
+     * finest level; the direct solver uses the matrix.
+     */
+    void
+    set_split_tangent(SplitTangent *split);
 
     /// Whether the matrices are symmetric (default): the Krylov method is
     /// then CG, otherwise GMRES.
@@ -217,6 +229,14 @@ namespace RestShape
     const MatrixType &
     amg_target(const MatrixType &A);
 
+    /// Whether the split applies @p A (CG + AMG without the block).
+    bool
+    uses_split(const MatrixType &A) const;
+    /// The rows the AMG is built on: the split's (A's) if uses_split(A),
+    /// those of amg_target(A) otherwise.
+    const Epetra_RowMatrix &
+    amg_rows(const MatrixType &A);
+
     /// The current AMG, in the block preconditioner with the current
     /// pressure coupling if uses_block().
     BlockPreconditioner
@@ -268,6 +288,7 @@ namespace RestShape
     /// block the AMG was built on and its diagonal, the inverse of the
     /// Schur complement's diagonal approximation (of the last solve).
     const PressureCoupling *coupling = nullptr;
+    SplitTangent           *split    = nullptr;
     MatrixType              displacement_block;
     VectorType              block_diagonal, inverse_schur;
 

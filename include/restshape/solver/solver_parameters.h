@@ -75,10 +75,13 @@ namespace RestShape
     /// block factorisation (BlockPreconditioner), or on the condensed
     /// tangent (the default).
     MixedPreconditioner mixed_preconditioner = MixedPreconditioner::condensed;
-    double              tangent_shift; // relative; 0: off
-    unsigned int        max_load_step_halvings;
-    unsigned int        initial_load_steps;
-    StabilityCheck      check_stability = StabilityCheck::automatic;
+    /// Solver/Nodal pressure product = split: CG + AMG multiply by the
+    /// averaged nodal pressure's tangent as SplitTangent does.
+    bool           split_nodal_tangent = true;
+    double         tangent_shift; // relative; 0: off
+    unsigned int   max_load_step_halvings;
+    unsigned int   initial_load_steps;
+    StabilityCheck check_stability = StabilityCheck::automatic;
     /// Solver/Direct factorisation = ldlt: MUMPS's LDL^T (SymmetricMumps)
     /// for symmetric tangents on one process; false: its LU (Amesos).
     bool symmetric_factorisation = false;
