@@ -22,6 +22,7 @@ namespace RestShape
     exporter.reset();
     x_columns.reset();
     y_columns.reset();
+    y_rows.reset();
     clear();
   }
 
@@ -121,6 +122,7 @@ namespace RestShape
         exporter    = std::make_unique<Epetra_Export>(W.ColMap(), W.RowMap());
         x_columns.reset();
         y_columns.reset();
+        y_rows.reset();
       }
     if (!located)
       {
@@ -216,6 +218,7 @@ namespace RestShape
       {
         x_columns = std::make_unique<Epetra_MultiVector>(W.ColMap(), n);
         y_columns = std::make_unique<Epetra_MultiVector>(W.ColMap(), n);
+        y_rows    = std::make_unique<Epetra_MultiVector>(W.RowMap(), n);
       }
     if (W.Importer() != nullptr)
       x_columns->Import(X, *W.Importer(), Insert);
@@ -224,7 +227,8 @@ namespace RestShape
     y_columns->PutScalar(0.);
     for (int v = 0; v < n; ++v)
       add_terms((*x_columns)[v], (*y_columns)[v]);
-    Epetra_MultiVector rows(W.RowMap(), n); // own and remote sums
+    Epetra_MultiVector &rows = *y_rows; // own and remote sums
+    rows.PutScalar(0.);
     rows.Export(*y_columns, *exporter, Add);
     for (int v = 0; v < n; ++v)
       for (int i = 0; i < Y.MyLength(); ++i)

@@ -227,7 +227,9 @@ namespace RestShape
     bool                           located     = false;
     const Epetra_CrsMatrix        *wide_matrix = nullptr;
     std::unique_ptr<Epetra_Export> exporter; // columns to rows
-    mutable std::unique_ptr<Epetra_MultiVector> x_columns, y_columns;
+    // Multiply()'s work vectors: X and the terms' sums by W's columns,
+    // those sums by its rows.
+    mutable std::unique_ptr<Epetra_MultiVector> x_columns, y_columns, y_rows;
     bool                                        valid = false;
   };
 } // namespace RestShape
