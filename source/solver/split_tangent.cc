@@ -118,8 +118,11 @@ namespace RestShape
     if (wide_matrix != &W)
       {
         wide_matrix = &W;
-        located     = locate(N, W);
-        exporter    = std::make_unique<Epetra_Export>(W.ColMap(), W.RowMap());
+        // On every process or on none: the products are collective.
+        int mine = locate(N, W) ? 1 : 0, all = 0;
+        W.Comm().MinAll(&mine, &all, 1);
+        located  = (all == 1);
+        exporter = std::make_unique<Epetra_Export>(W.ColMap(), W.RowMap());
         x_columns.reset();
         y_columns.reset();
         y_rows.reset();
