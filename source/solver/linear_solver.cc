@@ -510,16 +510,14 @@ namespace RestShape
     const std::string         amg_name       = preconditioner_name();
     try
       {
-        if (symmetric && uses_split(A))
+        if (symmetric)
           {
+            // The product by A: the split's where it applies.
             SolverCG<VectorType> cg(control);
-            cg.solve(*split, x, b, preconditioner);
-            last_method = "CG+" + amg_name;
-          }
-        else if (symmetric)
-          {
-            SolverCG<VectorType> cg(control);
-            cg.solve(A, x, b, preconditioner);
+            if (uses_split(A))
+              cg.solve(*split, x, b, preconditioner);
+            else
+              cg.solve(A, x, b, preconditioner);
             last_method = "CG+" + amg_name;
           }
         else
